@@ -1,0 +1,14 @@
+//! # crane-model
+//!
+//! A reduced-order flexible multibody model of a hydraulic mobile crane (the COLES
+//! Mobile 930 of S. Kılıçaslan's 1997 METU thesis), written for a load moment
+//! limiter: `no_std`, no heap, generic over `f32` (microcontroller) and `f64` (host).
+//!
+//! The work seam for the limiter is [`load_model::HookLoadModel`].
+#![cfg_attr(not(any(test, feature = "std")), no_std)]
+#![forbid(unsafe_code)]
+
+pub mod error;
+pub mod load_model;
+
+pub use error::ModelError;

@@ -1,0 +1,5 @@
+//! # moment-limiter
+//!
+//! Load moment limiter core (placeholder, being written).
+#![cfg_attr(not(any(test, feature = "std")), no_std)]
+#![forbid(unsafe_code)]

@@ -1,0 +1,2 @@
+//! `crane-sim`: the desktop tool of the load moment limiter.
+fn main() {}
