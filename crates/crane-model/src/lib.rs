@@ -9,6 +9,8 @@
 #![forbid(unsafe_code)]
 
 pub mod error;
+pub mod real;
 pub mod load_model;
 
 pub use error::ModelError;
+pub use real::Real;
