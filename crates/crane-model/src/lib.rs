@@ -8,9 +8,16 @@
 #![cfg_attr(not(any(test, feature = "std")), no_std)]
 #![forbid(unsafe_code)]
 
+pub mod crane;
+pub mod dense;
+pub mod eigen;
 pub mod error;
-pub mod real;
+pub mod fe;
 pub mod load_model;
+pub mod modal;
+pub mod real;
+pub mod section;
 
+pub use crane::CraneData;
 pub use error::ModelError;
 pub use real::Real;
