@@ -1,0 +1,83 @@
+//! # firmware
+//!
+//! The load moment limiter on an STM32F405RG (Cortex-M4F, 1 MiB flash, 128 KiB
+//! RAM), in two builds of this one crate selected by a cargo feature:
+//!
+//! - `qemu` (default): runs on `qemu-system-arm -machine netduinoplus2` and
+//!   replays a sensor log from the host through semihosting, through the same
+//!   limiter code, printing what `crane-sim replay` prints ([`qemu`]).
+//! - `board`: the real controller: stm32f4xx-hal clocks, the SPI ADC
+//!   (`limiter_drivers::Mcp3208`), the four outputs
+//!   (`limiter_drivers::AlarmOutputs`), a 100 Hz timer-driven control loop and
+//!   the independent watchdog (`board`). Hardware initialisation lives in
+//!   `board::init`, separate from the per-cycle logic.
+//!
+//! Layers, top to bottom: this crate wires hardware and chooses the model
+//! ([`model::hook_load_model`], the one seam for the precomputed reduced crane
+//! model) → `moment-limiter` (conversion, checks, load estimate, states, replay,
+//! formatting) → `crane-model` (`HookLoadModel`) ; `limiter-drivers` implements
+//! the limiter's `SensorInputs`/`Outputs` over embedded-hal 1.0.
+//!
+//! A panic cuts the outputs first (`panic`). No heap anywhere.
+#![no_std]
+#![no_main]
+// cortex-m-rt's `#[entry]` expands to an `#[export_name]` item, which the
+// unsafe_code lint flags; the attribute is required by the runtime.
+#![allow(unsafe_code)]
+
+#[cfg(all(feature = "qemu", feature = "board"))]
+compile_error!(
+    "choose one of the features `qemu` and `board` (use --no-default-features --features board)"
+);
+#[cfg(not(any(feature = "qemu", feature = "board")))]
+compile_error!("choose one of the features `qemu` (default) and `board`");
+
+use cortex_m as _; // critical-section implementation for defmt
+use cortex_m_rt::entry;
+
+pub mod model;
+mod panic;
+
+#[cfg(feature = "board")]
+mod board;
+#[cfg(feature = "qemu")]
+mod defmt_semihosting;
+#[cfg(feature = "qemu")]
+pub mod qemu;
+
+/// Per-build hooks the panic handler needs.
+mod platform {
+    #[cfg(feature = "board")]
+    pub use crate::board::{cut_outputs_now, halt_after_panic};
+
+    /// Under QEMU there are no physical outputs to cut.
+    #[cfg(feature = "qemu")]
+    pub fn cut_outputs_now() {}
+
+    /// Under QEMU: report on stderr and exit with status 101.
+    #[cfg(feature = "qemu")]
+    pub fn halt_after_panic(info: &core::panic::PanicInfo) -> ! {
+        use core::fmt::Write;
+        let mut err = crate::qemu::semihosting::HostWriter::stderr();
+        let _ = writeln!(err, "firmware panicked: {info}");
+        err.flush();
+        crate::qemu::semihosting::exit(101)
+    }
+}
+
+#[cfg(feature = "qemu")]
+#[entry]
+fn main() -> ! {
+    // `take` only fails if called twice; `main` runs once.
+    let Some(core) = cortex_m::Peripherals::take() else {
+        qemu::semihosting::exit(qemu::EXIT_INPUT)
+    };
+    let code = qemu::run(core.SYST);
+    qemu::semihosting::exit(code)
+}
+
+#[cfg(feature = "board")]
+#[entry]
+fn main() -> ! {
+    board::run()
+}
