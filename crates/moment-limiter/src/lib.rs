@@ -1,7 +1,55 @@
 //! # moment-limiter
 //!
-//! Load moment limiter core (being written).
+//! The core of a load moment limiter (LML, rated capacity limiter) for a
+//! telescopic-boom hydraulic crane on its jacks: from the two luffing-cylinder
+//! pressures and the boom angle to safe-load alarms and the cut-off of the
+//! motions that increase the load moment. `no_std`, no heap, no panics in the
+//! control path, generic over [`crane_model::Real`] so the controller runs it
+//! in `f32` and the host in `f64` from the same source.
+//!
+//! ## Layers, in the order a cycle runs through them
+//!
+//! | layer | module | what it holds |
+//! |---|---|---|
+//! | hardware seam | [`io`] | [`io::SensorInputs`] (ADC counts) and [`io::Outputs`] (lamps, cut-off) |
+//! | conversion | [`conversion`] | counts → mA → bar, counts → degrees, per sensor |
+//! | valid values | [`units`] | [`units::PressureBar`], [`units::BoomAngle`]: cannot hold a faulted reading |
+//! | checks | [`checks`] | NAMUR NE 43, range, stuck, rate of change |
+//! | force | [`piston_force`], [`filter`] | eq. 4.1 and the oscillation filter |
+//! | load | [`load_estimate`] | W from the model's affine piston force, friction per direction |
+//! | capacity | [`capacity`] | tipping load from the affine jack reaction, safety factor, chart |
+//! | decision | [`state_machine`] | NORMAL / WARNING / OVERLOAD / FAULT, hysteresis, outputs |
+//! | logger | [`event_log`] | EN 13000 event ring buffer |
+//! | the cycle | [`limiter`] | [`limiter::Limiter`]: one `step` ties the above together |
+//! | recorded logs | [`log_format`], [`replay`] | SPEC §5 CSV parser, replay engine, printed output |
+//! | learning | [`calibration`] | friction from unloaded runs |
+//! | testing aids | [`fault_injector`], [`rigid_reference`] | sensor fault injection; a rigid stand-in model |
+//!
+//! ## What a firmware author calls
+//!
+//! Build a [`limiter::Limiter`] from a crane model implementing
+//! [`crane_model::load_model::HookLoadModel`] and a
+//! [`limiter::LimiterConfig`]; call [`limiter::Limiter::power_up`] once, then
+//! [`limiter::Limiter::cycle`] every 10 ms with the time, the sensor inputs
+//! and the outputs. Drain [`limiter::Limiter::events_mut`] to storage.
+//! The replay tool calls [`limiter::Limiter::step_frame`] through
+//! [`replay::Replay`] instead.
 #![cfg_attr(not(any(test, feature = "std")), no_std)]
 #![forbid(unsafe_code)]
 
+pub mod calibration;
+pub mod capacity;
+pub mod checks;
+pub mod conversion;
+pub mod event_log;
+pub mod fault_injector;
+pub mod filter;
 pub mod io;
+pub mod limiter;
+pub mod load_estimate;
+pub mod log_format;
+pub mod piston_force;
+pub mod replay;
+pub mod rigid_reference;
+pub mod state_machine;
+pub mod units;

@@ -1,0 +1,486 @@
+//! The per-cycle step that ties the stages together (SPEC §4, default 100 Hz).
+//!
+//! One cycle, in order (each stage is a module of this crate):
+//! 1. **read and check**: counts → loop current → bar / degrees
+//!    ([`crate::conversion`]), instant checks ([`crate::units`]), history
+//!    checks ([`crate::checks`]);
+//! 2. **piston force** (eq. 4.1, [`crate::piston_force`]) and low-pass filters
+//!    on force and angle ([`crate::filter`]); angle rate and direction;
+//! 3. **hook load** from the model's affine piston force
+//!    ([`crate::load_estimate`]);
+//! 4. **rated load** from the model's affine jack reaction
+//!    ([`crate::capacity`]);
+//! 5. **utilization and state** ([`crate::state_machine`]), outputs;
+//! 6. **event log** ([`crate::event_log`]).
+//!
+//! Two entries share everything after stage 1: [`Limiter::step_counts`] for
+//! the hardware (raw ADC counts through [`SensorInputs`]) and
+//! [`Limiter::step_frame`] for recorded logs already in physical units (the
+//! replay), which are range-checked exactly as the firmware would: a value out
+//! of range in a log is a sensor FAULT (SPEC §5).
+//!
+//! The first cycle is the **power-up self-test**: it must read all three
+//! sensors without a fault; its result is logged. Until that cycle the
+//! limiter reports FAULT, and [`Limiter::power_up`] drives the fail-safe
+//! command (which doubles as the lamp test).
+//!
+//! A model or capacity error, a clock going backwards and an output failure
+//! are faults too: whenever the limiter cannot tell that the crane is safe,
+//! it cuts.
+
+use core::fmt;
+
+use crane_model::load_model::{BoomState, HookLoadModel};
+use crane_model::Real;
+
+use crate::capacity::{Capacity, CapacityError};
+use crate::checks::{channel_name, FaultKind, PlausibilityConfig, PlausibilityMonitor, SensorFault};
+use crate::conversion::SensorConversion;
+use crate::event_log::{Event, EventKind, EventLog};
+use crate::filter::LowPass;
+use crate::io::{Channel, OutputCommand, OutputError, Outputs, SensorInputs};
+use crate::load_estimate::{
+    estimate_load_kg, Calibration, Direction, DirectionDetector, DirectionThresholds,
+    EstimateError,
+};
+use crate::piston_force::piston_force_n;
+use crate::state_machine::{CycleInput, LimiterState, StateMachine, Thresholds};
+use crate::units::{BoomAngle, PressureBar};
+
+/// Number of events the limiter's log holds.
+pub const EVENT_LOG_LEN: usize = 64;
+
+/// Utilization reported when the rated load is zero, and the ceiling of any
+/// reported utilization (keeps logs finite; far above every threshold).
+pub const UTILIZATION_CEILING: f64 = 10.0;
+
+/// One sample of a recorded log, in physical units.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Frame<T> {
+    /// Time (s).
+    pub t_s: T,
+    /// Piston-side pressure p1 (bar).
+    pub p1_bar: T,
+    /// Rod-side pressure p2 (bar).
+    pub p2_bar: T,
+    /// Boom angle (degrees from horizontal).
+    pub boom_angle_deg: T,
+}
+
+/// Why the limiter is in FAULT.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Fault {
+    /// A sensor reading failed a check.
+    Sensor(SensorFault),
+    /// No load estimate could be made.
+    Estimate(EstimateError),
+    /// No rated load could be computed.
+    Capacity(CapacityError),
+    /// Time did not advance (went backwards or is not finite).
+    Clock,
+    /// The outputs could not be driven.
+    Output,
+}
+
+impl fmt::Display for Fault {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Fault::Sensor(s) => write!(f, "{} {}", channel_name(s.channel), s.kind.as_str()),
+            Fault::Estimate(EstimateError::Model(e)) => write!(f, "load model: {e}"),
+            Fault::Estimate(EstimateError::NotObservable) => f.write_str("load not observable"),
+            Fault::Capacity(CapacityError::Model(e)) => write!(f, "capacity model: {e}"),
+            Fault::Capacity(CapacityError::NotObservable) => f.write_str("capacity not observable"),
+            Fault::Clock => f.write_str("clock not advancing"),
+            Fault::Output => f.write_str("output driver failed"),
+        }
+    }
+}
+
+/// Why a [`LimiterConfig`] was refused; the name says which part.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ConfigError(pub &'static str);
+
+impl fmt::Display for ConfigError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "invalid limiter configuration: {}", self.0)
+    }
+}
+
+/// Everything the limiter is configured with (constant while it runs).
+#[derive(Debug, Clone, PartialEq)]
+pub struct LimiterConfig<T> {
+    /// Counts → physical units.
+    pub conversion: SensorConversion<T>,
+    /// Rate-of-change and stuck limits.
+    pub plausibility: PlausibilityConfig<T>,
+    /// Cut-off of each stage of the piston-force filter (Hz).
+    pub force_filter_hz: T,
+    /// Cut-off of each stage of the boom-angle filter (Hz).
+    pub angle_filter_hz: T,
+    /// Cut-off of each stage of the angle-rate filter (Hz).
+    pub rate_filter_hz: T,
+    /// Direction-of-motion thresholds.
+    pub direction: DirectionThresholds<T>,
+    /// Safety factor and chart.
+    pub capacity: Capacity<T>,
+    /// State machine thresholds and times.
+    pub thresholds: Thresholds<T>,
+    /// Friction and offsets.
+    pub calibration: Calibration<T>,
+}
+
+impl<T: Real> LimiterConfig<T> {
+    /// The documented defaults of every module; filters at 3 Hz (force and
+    /// angle) and 1 Hz (rate); no calibration.
+    pub fn standard() -> Self {
+        Self {
+            conversion: SensorConversion::standard(),
+            plausibility: PlausibilityConfig::standard(),
+            force_filter_hz: T::lit(3.0),
+            angle_filter_hz: T::lit(3.0),
+            rate_filter_hz: T::lit(1.0),
+            direction: DirectionThresholds::standard(),
+            capacity: Capacity::standard(),
+            thresholds: Thresholds::standard(),
+            calibration: Calibration::none(),
+        }
+    }
+
+    /// Checks every part.
+    pub fn validate(&self) -> Result<(), ConfigError> {
+        let hz = |x: T| x.is_finite() && x > T::lit(0.0);
+        let checks = [
+            (self.conversion.is_valid(), "conversion"),
+            (self.plausibility.is_valid(), "plausibility"),
+            (hz(self.force_filter_hz), "force_filter_hz"),
+            (hz(self.angle_filter_hz), "angle_filter_hz"),
+            (hz(self.rate_filter_hz), "rate_filter_hz"),
+            (self.direction.is_valid(), "direction"),
+            (self.capacity.is_valid(), "capacity"),
+            (self.thresholds.is_valid(), "thresholds"),
+            (self.calibration.is_valid(), "calibration"),
+        ];
+        match checks.iter().find(|(ok, _)| !ok) {
+            Some((_, name)) => Err(ConfigError(name)),
+            None => Ok(()),
+        }
+    }
+}
+
+/// The signals after conversion and filtering.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Measurement<T> {
+    /// Filtered piston force (N), transducer offsets removed.
+    pub piston_force_n: T,
+    /// Filtered boom angle (degrees), pendulum offset removed.
+    pub boom_angle_deg: T,
+    /// Filtered angle rate (degrees per second).
+    pub rate_deg_s: T,
+    /// Direction of motion.
+    pub direction: Direction,
+    /// Direction whose friction is in the force (see [`crate::load_estimate`]).
+    pub friction_direction: Direction,
+    /// The state handed to the model.
+    pub boom: BoomState<T>,
+}
+
+/// Load, capacity and utilization of one cycle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Estimate<T> {
+    /// Estimated hook load (kg).
+    pub load_kg: T,
+    /// Rated load (kg).
+    pub rated_load_kg: T,
+    /// Tipping load (kg); `None` when no load can tip the crane here.
+    pub tipping_load_kg: Option<T>,
+    /// load / rated, capped at [`UTILIZATION_CEILING`].
+    pub utilization: T,
+    /// Hook radius (m).
+    pub radius_m: T,
+}
+
+/// The result of one cycle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StepReport<T> {
+    /// Time of the cycle (s).
+    pub t_s: T,
+    /// State after the cycle.
+    pub state: LimiterState,
+    /// Outputs to drive.
+    pub command: OutputCommand,
+    /// Filtered signals, when all readings were good.
+    pub measurement: Option<Measurement<T>>,
+    /// Load and capacity, when they could be computed.
+    pub estimate: Option<Estimate<T>>,
+    /// The fault found in this cycle, if any.
+    pub fault: Option<Fault>,
+}
+
+/// Checked readings of one cycle.
+type Readings<T> = (PressureBar<T>, PressureBar<T>, BoomAngle<T>);
+
+/// The load moment limiter: configuration, model and running state.
+#[derive(Debug, Clone)]
+pub struct Limiter<T, M> {
+    model: M,
+    config: LimiterConfig<T>,
+    monitor: PlausibilityMonitor<T>,
+    force_filter: LowPass<T>,
+    angle_filter: LowPass<T>,
+    rate_filter: LowPass<T>,
+    previous_angle_deg: Option<T>,
+    direction: DirectionDetector<T>,
+    machine: StateMachine<T>,
+    log: EventLog<T, EVENT_LOG_LEN>,
+    last_t_s: Option<T>,
+    state: Option<LimiterState>,
+    output_failed: bool,
+}
+
+impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
+    /// A limiter that has not run its self-test yet (it reports FAULT).
+    pub fn new(model: M, config: LimiterConfig<T>) -> Result<Self, ConfigError> {
+        config.validate()?;
+        Ok(Self {
+            monitor: PlausibilityMonitor::new(config.plausibility),
+            force_filter: LowPass::new(config.force_filter_hz),
+            angle_filter: LowPass::new(config.angle_filter_hz),
+            rate_filter: LowPass::new(config.rate_filter_hz),
+            previous_angle_deg: None,
+            direction: DirectionDetector::new(config.direction),
+            machine: StateMachine::new(config.thresholds),
+            log: EventLog::new(),
+            last_t_s: None,
+            state: None,
+            output_failed: false,
+            model,
+            config,
+        })
+    }
+
+    /// The crane model.
+    pub fn model(&self) -> &M {
+        &self.model
+    }
+
+    /// The configuration.
+    pub fn config(&self) -> &LimiterConfig<T> {
+        &self.config
+    }
+
+    /// The event log.
+    pub fn events(&self) -> &EventLog<T, EVENT_LOG_LEN> {
+        &self.log
+    }
+
+    /// Mutable event log (to drain it to storage).
+    pub fn events_mut(&mut self) -> &mut EventLog<T, EVENT_LOG_LEN> {
+        &mut self.log
+    }
+
+    /// Present state (FAULT before the first cycle).
+    pub fn state(&self) -> LimiterState {
+        self.state.unwrap_or(LimiterState::Fault)
+    }
+
+    /// Power-up: drives the fail-safe command (motions cut, lamps on: the lamp
+    /// test) until the first cycle decides otherwise.
+    pub fn power_up<O: Outputs>(&mut self, outputs: &mut O) -> Result<(), OutputError> {
+        let r = outputs.apply(OutputCommand::FAIL_SAFE);
+        if r.is_err() {
+            self.output_failed = true;
+        }
+        r
+    }
+
+    /// One hardware cycle: reads the counts, steps, drives the outputs. An
+    /// output failure makes the next cycles FAULT (the outputs are wired so
+    /// that a failed driver leaves the motions cut).
+    pub fn cycle<S: SensorInputs, O: Outputs>(
+        &mut self,
+        t_s: T,
+        inputs: &mut S,
+        outputs: &mut O,
+    ) -> StepReport<T> {
+        let report = self.step_counts(t_s, inputs);
+        self.output_failed = outputs.apply(report.command).is_err();
+        report
+    }
+
+    /// One cycle from raw ADC counts (the firmware's entry).
+    pub fn step_counts<S: SensorInputs>(&mut self, t_s: T, inputs: &mut S) -> StepReport<T> {
+        let readings = self.read_counts(inputs);
+        self.step_readings(t_s, readings)
+    }
+
+    /// One cycle from a recorded frame in physical units (the replay's entry).
+    pub fn step_frame(&mut self, frame: &Frame<T>) -> StepReport<T> {
+        let fault = |channel: Channel| move |kind: FaultKind| SensorFault { channel, kind };
+        let readings = PressureBar::new(frame.p1_bar)
+            .map_err(fault(Channel::PistonSidePressure))
+            .and_then(|p1| {
+                let p2 = PressureBar::new(frame.p2_bar).map_err(fault(Channel::RodSidePressure))?;
+                let a = BoomAngle::new(frame.boom_angle_deg).map_err(fault(Channel::BoomAngle))?;
+                Ok((p1, p2, a))
+            });
+        self.step_readings(frame.t_s, readings)
+    }
+
+    fn read_counts<S: SensorInputs>(&self, inputs: &mut S) -> Result<Readings<T>, SensorFault> {
+        let conv = &self.config.conversion;
+        let fault = |channel: Channel| move |kind: FaultKind| SensorFault { channel, kind };
+        let read = |inputs: &mut S, channel: Channel| {
+            inputs.read_counts(channel).map_err(|e| SensorFault { channel, kind: FaultKind::Input(e) })
+        };
+        let c1 = read(inputs, Channel::PistonSidePressure)?;
+        let p1 = conv.pressure(&conv.p1, c1).map_err(fault(Channel::PistonSidePressure))?;
+        let c2 = read(inputs, Channel::RodSidePressure)?;
+        let p2 = conv.pressure(&conv.p2, c2).map_err(fault(Channel::RodSidePressure))?;
+        let ca = read(inputs, Channel::BoomAngle)?;
+        let a = conv.boom_angle(ca).map_err(fault(Channel::BoomAngle))?;
+        Ok((p1, p2, a))
+    }
+
+    /// Stages 2–6, shared by both entries.
+    fn step_readings(&mut self, t_s: T, readings: Result<Readings<T>, SensorFault>) -> StepReport<T> {
+        // Clock.
+        let dt = match self.last_t_s {
+            None => Some(T::lit(0.0)),
+            Some(last) if t_s.is_finite() && t_s >= last => Some(t_s - last),
+            Some(_) => None,
+        };
+        if t_s.is_finite() && dt.is_some() {
+            self.last_t_s = Some(t_s);
+        }
+        let dt_s = dt.unwrap_or(T::lit(0.0));
+
+        // Stage 1 (history checks) and stages 2–4.
+        let mut measurement = None;
+        let mut estimate = None;
+        let fault = if dt.is_none() {
+            Some(Fault::Clock)
+        } else if self.output_failed {
+            Some(Fault::Output)
+        } else {
+            None
+        };
+        let fault = match (fault, readings) {
+            (Some(f), _) => {
+                self.restart_signal_chain();
+                Some(f)
+            }
+            (None, Err(sensor)) => {
+                self.restart_signal_chain();
+                Some(Fault::Sensor(sensor))
+            }
+            (None, Ok((p1, p2, angle))) => {
+                match self.monitor.check([p1.bar(), p2.bar(), angle.degrees()], dt_s) {
+                    Err(sensor) => {
+                        self.restart_signal_chain();
+                        Some(Fault::Sensor(sensor))
+                    }
+                    Ok(()) => {
+                        let m = self.measure(p1, p2, angle, dt_s);
+                        measurement = Some(m);
+                        match self.assess(&m) {
+                            Ok(e) => {
+                                estimate = Some(e);
+                                None
+                            }
+                            Err(f) => Some(f),
+                        }
+                    }
+                }
+            }
+        };
+
+        // Stage 5.
+        let input = match (&fault, &estimate) {
+            (None, Some(e)) => CycleInput::Utilization(e.utilization),
+            _ => CycleInput::Fault,
+        };
+        let state = self.machine.update(dt_s, input);
+
+        // Stage 6: self-test on the first cycle, then every state change.
+        let event = |kind| Event {
+            t_s,
+            kind,
+            boom_angle_deg: measurement.map(|m| m.boom_angle_deg),
+            load_kg: estimate.map(|e| e.load_kg),
+            utilization: estimate.map(|e| e.utilization),
+        };
+        if self.state.is_none() {
+            self.log.push(event(match fault {
+                None => EventKind::SelfTestPassed,
+                Some(f) => EventKind::SelfTestFailed(f),
+            }));
+        }
+        if self.state != Some(state) {
+            let cause = if state == LimiterState::Fault { fault } else { None };
+            self.log.push(event(EventKind::Entered(state, cause)));
+        }
+        self.state = Some(state);
+
+        StepReport { t_s, state, command: state.command(), measurement, estimate, fault }
+    }
+
+    /// After a bad cycle the filters restart settled on the next good sample,
+    /// so no faulty value ever reaches them.
+    fn restart_signal_chain(&mut self) {
+        self.monitor.break_rate_history();
+        self.force_filter.reset();
+        self.angle_filter.reset();
+        self.rate_filter.reset();
+        self.previous_angle_deg = None;
+    }
+
+    /// Stage 2: force, filters, rate and direction.
+    fn measure(&mut self, p1: PressureBar<T>, p2: PressureBar<T>, angle: BoomAngle<T>, dt_s: T) -> Measurement<T> {
+        let cal = &self.config.calibration;
+        let force = piston_force_n(p1, p2, cal.p1_offset_bar, cal.p2_offset_bar);
+        let force_f = self.force_filter.update(force, dt_s);
+        let angle_f = self.angle_filter.update(angle.degrees() - cal.angle_offset_deg, dt_s);
+        let raw_rate = match self.previous_angle_deg {
+            Some(prev) if dt_s > T::lit(0.0) => (angle_f - prev) / dt_s,
+            _ => self.rate_filter.output().unwrap_or(T::lit(0.0)),
+        };
+        self.previous_angle_deg = Some(angle_f);
+        let rate_f = self.rate_filter.update(raw_rate, dt_s);
+        let direction = self.direction.update(rate_f);
+        let to_rad = T::pi() / T::lit(180.0);
+        Measurement {
+            piston_force_n: force_f,
+            boom_angle_deg: angle_f,
+            rate_deg_s: rate_f,
+            direction,
+            friction_direction: self.direction.friction_direction(),
+            boom: BoomState { angle_rad: angle_f * to_rad, rate_rad_s: rate_f * to_rad },
+        }
+    }
+
+    /// Stages 3–4: load, rating, utilization.
+    fn assess(&self, m: &Measurement<T>) -> Result<Estimate<T>, Fault> {
+        let load_kg = estimate_load_kg(
+            &self.model,
+            m.boom,
+            m.piston_force_n,
+            &self.config.calibration,
+            m.friction_direction,
+        )
+        .map_err(Fault::Estimate)?;
+        let rating = self.config.capacity.rating(&self.model, m.boom).map_err(Fault::Capacity)?;
+        let ceiling = T::lit(UTILIZATION_CEILING);
+        let utilization = if rating.rated_load_kg > T::lit(0.0) {
+            (load_kg / rating.rated_load_kg).min(ceiling)
+        } else {
+            ceiling
+        };
+        Ok(Estimate {
+            load_kg,
+            rated_load_kg: rating.rated_load_kg,
+            tipping_load_kg: rating.tipping_load_kg,
+            utilization,
+            radius_m: rating.radius_m,
+        })
+    }
+}
