@@ -10,13 +10,21 @@
 
 pub mod crane;
 pub mod dense;
+pub mod dynamics;
 pub mod eigen;
 pub mod error;
 pub mod fe;
+pub mod integrator;
 pub mod load_model;
+pub mod multibody;
+pub mod bodies;
+pub mod mechanism;
 pub mod modal;
+pub mod profile;
 pub mod real;
 pub mod section;
+pub mod simulation;
+pub mod statics;
 
 pub use crane::CraneData;
 pub use error::ModelError;
