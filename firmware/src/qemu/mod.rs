@@ -18,16 +18,20 @@
 //! when QEMU runs with `-icount shift=0`).
 
 pub mod budgets;
-mod engine_placeholder;
+mod calibration_json;
 pub mod semihosting;
 
 use core::fmt::Write;
+use moment_limiter::limiter::{Limiter, LimiterConfig};
+use moment_limiter::log_format::{LogError, LogErrorKind, LogParser};
+use moment_limiter::replay::{self, Replay, ReplayEvent, ReplaySummary};
 use semihosting::{FileError, HostFile, HostWriter, LineReader};
 
-/// Exit code: the log was read and never entered OVERLOAD or FAULT.
-pub const EXIT_OK: u8 = 0;
 /// Exit code: the input (arguments, log or calibration) could not be read.
 pub const EXIT_INPUT: u8 = 1;
+
+/// Bytes of one log line the firmware accepts (longer lines are an error).
+const LINE_BUF: usize = 512;
 
 /// The command line, as `crane-sim replay` takes it.
 #[derive(Debug, Default)]
@@ -66,6 +70,99 @@ fn parse_args(cmdline: &str) -> Result<Args<'_>, &'static str> {
     Ok(args)
 }
 
+/// What one pass over the log ended with.
+struct PassEnd {
+    summary: ReplaySummary<f32>,
+    /// Why the log was not read to its end, if it was not.
+    error: Option<LogError>,
+}
+
+/// Opens the log and runs every line through a fresh limiter, calling
+/// `on_event` for each state change. Per-cycle counts go to `cycles`.
+fn replay_pass(
+    path: &str,
+    config: &LimiterConfig<f32>,
+    counter: &mut budgets::CycleCounter,
+    cycles: &mut budgets::CycleStats,
+    mut on_event: impl FnMut(&ReplayEvent<f32>),
+) -> Result<PassEnd, FileError> {
+    let limiter = match Limiter::new(crate::model::hook_load_model(), config.clone()) {
+        Ok(limiter) => limiter,
+        Err(_) => return Err(FileError::Open), // checked by the caller before
+    };
+    let mut replay = Replay::new(limiter);
+    let mut parser = LogParser::<f32>::new();
+    let mut lines = LineReader::<LINE_BUF>::new(HostFile::open(path)?);
+    let error = loop {
+        let line = match lines.next_line() {
+            Ok(Some(line)) => line,
+            Ok(None) => break parser.finish().err(),
+            Err(FileError::NotUtf8) => break Some(parser.reject_next_line(LogErrorKind::NotUtf8)),
+            Err(_) => break Some(parser.reject_next_line(LogErrorKind::Unreadable)),
+        };
+        match parser.feed_line(line) {
+            Ok(Some(record)) => {
+                // One control cycle: the same `Limiter` step the board runs.
+                let ((_, event), ticks) = counter.measure(|| replay.feed(&record));
+                cycles.add(ticks);
+                if let Some(event) = event {
+                    on_event(&event);
+                }
+            }
+            Ok(None) => {}
+            Err(e) => break Some(e),
+        }
+    };
+    Ok(PassEnd {
+        summary: replay.summary(),
+        error,
+    })
+}
+
+/// Writes the JSON object of `crane-sim replay --json` without holding the
+/// events: the limiter's `write_json` formats the head (with no events) and
+/// then each event on its own, and only the event part of each is kept, so
+/// every byte still comes from the limiter's formatter.
+struct JsonStream {
+    events: u32,
+}
+
+const EVENTS_KEY: &str = "\"events\":[";
+const JSON_TAIL: &str = "]}\n";
+
+impl JsonStream {
+    fn head(out: &mut HostWriter, summary: &ReplaySummary<f32>, error: Option<&LogError>) -> Self {
+        let mut buf = heapless::String::<1024>::new();
+        let _ = replay::write_json(&mut buf, summary, core::iter::empty(), error);
+        match buf.find(EVENTS_KEY) {
+            Some(i) => out.write_bytes(&buf.as_bytes()[..i + EVENTS_KEY.len()]),
+            None => out.write_bytes(buf.as_bytes()),
+        }
+        JsonStream { events: 0 }
+    }
+
+    fn event(
+        &mut self,
+        out: &mut HostWriter,
+        summary: &ReplaySummary<f32>,
+        event: &ReplayEvent<f32>,
+    ) {
+        let mut buf = heapless::String::<1024>::new();
+        let _ = replay::write_json(&mut buf, summary, core::iter::once(event), None);
+        let start = buf.find(EVENTS_KEY).map_or(0, |i| i + EVENTS_KEY.len());
+        let end = buf.len().saturating_sub(JSON_TAIL.len());
+        if self.events > 0 {
+            out.write_bytes(b",");
+        }
+        out.write_bytes(&buf.as_bytes()[start..end.max(start)]);
+        self.events += 1;
+    }
+
+    fn tail(self, out: &mut HostWriter) {
+        out.write_bytes(JSON_TAIL.as_bytes());
+    }
+}
+
 /// Runs the replay and returns the process exit code.
 pub fn run(syst: cortex_m::peripheral::SYST) -> u8 {
     let mut err = HostWriter::stderr();
@@ -83,61 +180,73 @@ pub fn run(syst: cortex_m::peripheral::SYST) -> u8 {
     };
     let log_path = args.log.unwrap_or_default();
 
-    let mut calibration_buf = [0u8; 2048];
-    let _calibration: Option<&[u8]> = match args.calibration {
-        None => None,
-        Some(path) => {
-            match HostFile::open(path).and_then(|mut f| f.read_to_end(&mut calibration_buf)) {
-                Ok(bytes) => Some(bytes),
-                Err(e) => {
-                    let _ = writeln!(err, "error: {path}: {e}");
-                    return EXIT_INPUT;
-                }
-            }
-        }
-    };
-
-    let file = match HostFile::open(log_path) {
-        Ok(f) => f,
-        Err(e) => {
-            let _ = writeln!(err, "error: {log_path}: {e}");
-            return EXIT_INPUT;
-        }
-    };
-    let mut lines = LineReader::<512>::new(file);
-    let mut out = HostWriter::stdout();
-    let mut counter = budgets::CycleCounter::start(syst);
-    let mut cycles = budgets::CycleStats::default();
-
-    let mut replay = engine_placeholder::Replay::new();
-    loop {
-        let line = match lines.next_line() {
-            Ok(Some(line)) => line,
-            Ok(None) => break,
+    let mut config = LimiterConfig::<f32>::standard();
+    if let Some(path) = args.calibration {
+        let mut buf = [0u8; 2048];
+        let text = match HostFile::open(path).and_then(|mut f| f.read_to_end(&mut buf)) {
+            Ok(bytes) => bytes,
             Err(e) => {
-                out.flush();
-                let _ = writeln!(err, "error: {log_path}: {e}");
+                let _ = writeln!(err, "error: {path}: {e}");
                 return EXIT_INPUT;
             }
         };
-        let (result, ticks) = counter.measure(|| replay.push_line(line));
-        match result {
-            Ok(Some(event)) => {
-                cycles.add(ticks);
-                if !args.json {
-                    let _ = engine_placeholder::Replay::write_event(&mut out, &event);
-                }
-            }
-            Ok(None) => cycles.add(ticks),
+        match calibration_json::parse(text) {
+            Ok(calibration) => config.calibration = calibration,
             Err(e) => {
-                out.flush();
-                let _ = writeln!(err, "error: {log_path}: {e}");
+                let _ = writeln!(err, "error: {path}: {e}");
                 return EXIT_INPUT;
             }
         }
     }
-    let _ = replay.write_summary(&mut out, args.json);
+    if let Err(e) = Limiter::new(crate::model::hook_load_model(), config.clone()) {
+        let _ = writeln!(err, "error: {e}");
+        return EXIT_INPUT;
+    }
+
+    let mut out = HostWriter::stdout();
+    let mut counter = budgets::CycleCounter::start(syst);
+    let mut cycles = budgets::CycleStats::default();
+
+    let end = if args.json {
+        // Pass 1 finds the summary that heads the object; pass 2 streams the
+        // events (the replay is deterministic: the same events again).
+        let first = replay_pass(log_path, &config, &mut counter, &mut cycles, |_| {});
+        match first {
+            Ok(first) => {
+                let mut json = JsonStream::head(&mut out, &first.summary, first.error.as_ref());
+                let mut ignored = budgets::CycleStats::default();
+                let second = replay_pass(log_path, &config, &mut counter, &mut ignored, |e| {
+                    json.event(&mut out, &first.summary, e)
+                });
+                json.tail(&mut out);
+                second.map(|_| first)
+            }
+            Err(e) => Err(e),
+        }
+    } else {
+        replay_pass(log_path, &config, &mut counter, &mut cycles, |e| {
+            let _ = replay::write_event_line(&mut out, e);
+        })
+        .inspect(|end| {
+            let _ = replay::write_summary_line(&mut out, &end.summary);
+        })
+    };
     out.flush();
+
+    let code = match end {
+        Err(e) => {
+            let _ = writeln!(err, "error: {log_path}: {e}");
+            EXIT_INPUT
+        }
+        Ok(PassEnd { error: Some(e), .. }) => {
+            let _ = writeln!(err, "error: {log_path}: {e}");
+            EXIT_INPUT
+        }
+        Ok(PassEnd {
+            summary,
+            error: None,
+        }) => summary.exit_code(),
+    };
 
     if args.budgets {
         // Calibration: `asm::delay(n)` runs a 2-instruction loop n + 1 times, so it
@@ -148,7 +257,7 @@ pub fn run(syst: cortex_m::peripheral::SYST) -> u8 {
         let ((), delay_ticks) = counter.measure(|| cortex_m::asm::delay(CALIBRATION_LOOPS));
         report_budgets(&mut err, &cycles, delay_ticks);
     }
-    replay.exit_code()
+    code
 }
 
 /// Loops of the calibration delay (see `run`).
@@ -168,9 +277,4 @@ fn report_budgets(err: &mut HostWriter, cycles: &budgets::CycleStats, delay_tick
         2 * CALIBRATION_LOOPS + 2,
         delay_ticks,
     );
-}
-
-#[allow(dead_code)]
-fn _assert_error_display(e: FileError) -> impl core::fmt::Display {
-    e
 }
