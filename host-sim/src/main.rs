@@ -8,6 +8,8 @@ use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
 mod cmd;
+mod model;
+mod plot;
 
 #[derive(Parser)]
 #[command(name = "crane-sim", version, about = "Load moment limiter simulator for the COLES Mobile 930 (Kılıçaslan 1997)")]

@@ -1,10 +1,205 @@
-//! `crane-sim simulate` (not written yet).
+//! `crane-sim simulate`: one boom maneuver of the thesis (SPEC §5).
+
+use crate::model::thesis_model;
+use crate::plot::{write_svg, Panel, Series};
+use anyhow::{bail, Context, Result};
+use crane_model::profile::RampShape;
+use crane_model::simulation::{thesis_cases, Direction, InitialState, Maneuver, Sample, SimulationOptions};
+use std::io::Write;
+use std::path::PathBuf;
+
+/// Ramp shape on the command line.
+#[derive(clap::ValueEnum, Clone, Copy, Debug)]
+pub enum ProfileArg {
+    /// Linear acceleration and deceleration (eq. 3.48).
+    Linear,
+    /// Cycloidal acceleration and deceleration (eq. 3.47).
+    Cycloidal,
+}
+
+/// Direction on the command line.
+#[derive(clap::ValueEnum, Clone, Copy, Debug)]
+pub enum DirectionArg {
+    /// 40° → 80°.
+    Up,
+    /// 80° → 40°.
+    Down,
+}
+
+/// Initial state on the command line.
+#[derive(clap::ValueEnum, Clone, Copy, Debug)]
+pub enum InitialArg {
+    /// Static deflection projected in the energy norm (the reduced model's equilibrium).
+    Equilibrium,
+    /// The listing's Euclidean least-squares projection.
+    Listing,
+}
 
 /// Arguments of `crane-sim simulate`.
 #[derive(clap::Args, Debug)]
-pub struct SimulateArgs {}
+pub struct SimulateArgs {
+    /// A thesis case by name (see --list); overrides the four flags below.
+    #[arg(long)]
+    case: Option<String>,
+    /// List the twelve thesis cases and exit.
+    #[arg(long)]
+    list: bool,
+    /// Hook load W (kg).
+    #[arg(long, default_value_t = 3300.0)]
+    load_kg: f64,
+    /// Duration of the motion: 30 or 10 (s).
+    #[arg(long, default_value_t = 30.0)]
+    duration: f64,
+    /// Velocity profile of the piston.
+    #[arg(long, value_enum, default_value = "cycloidal")]
+    profile: ProfileArg,
+    /// Boom up (40° → 80°) or down (80° → 40°).
+    #[arg(long, value_enum, default_value = "up")]
+    direction: DirectionArg,
+    /// Time step (ms).
+    #[arg(long, default_value_t = 2.0)]
+    step_ms: f64,
+    /// Output every this many steps.
+    #[arg(long, default_value_t = 5)]
+    output_every: usize,
+    /// How the run starts.
+    #[arg(long, value_enum, default_value = "equilibrium")]
+    initial: InitialArg,
+    /// Write the samples as CSV.
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Draw piston force and deflections against boom angle (SVG).
+    #[arg(long)]
+    plot: Option<PathBuf>,
+}
+
+/// The CSV header (SPEC §5 columns first).
+pub const CSV_HEADER: &str = "t_s,boom_angle_deg,piston_force_n,node3_defl_m,node8_defl_m,node13_defl_m,jack_reaction_n,swing_deg,constraint_violation";
+
+/// One CSV row.
+pub fn csv_row(s: &Sample<f64>) -> String {
+    format!(
+        "{:.4},{:.6},{:.3},{:.6e},{:.6e},{:.6e},{:.3},{:.6},{:.3e}",
+        s.t_s,
+        s.boom_angle_rad.to_degrees(),
+        s.reactions.piston_force_n,
+        s.deflection_m[0],
+        s.deflection_m[1],
+        s.deflection_m[2],
+        s.reactions.jack_reaction_n,
+        s.swing_rad.to_degrees(),
+        s.constraint_violation
+    )
+}
+
+/// Resolves the maneuver from the arguments.
+fn maneuver(args: &SimulateArgs) -> Result<(String, Maneuver)> {
+    if let Some(name) = &args.case {
+        return thesis_cases()
+            .into_iter()
+            .find(|(n, _)| n == name)
+            .map(|(n, m)| (n.to_string(), m))
+            .with_context(|| format!("unknown case '{name}'; `crane-sim simulate --list` shows the twelve thesis cases"));
+    }
+    if args.duration != 30.0 && args.duration != 10.0 {
+        bail!("--duration must be 30 or 10 (s), got {}", args.duration);
+    }
+    let shape = match args.profile {
+        ProfileArg::Linear => RampShape::Linear,
+        ProfileArg::Cycloidal => RampShape::Cycloidal,
+    };
+    let direction = match args.direction {
+        DirectionArg::Up => Direction::Up,
+        DirectionArg::Down => Direction::Down,
+    };
+    let m = Maneuver::thesis(args.load_kg, args.duration, shape, direction).map_err(|e| anyhow::anyhow!("{e}"))?;
+    Ok((format!("{} kg, {} s, {:?}, {:?}", args.load_kg, args.duration, shape, direction), m))
+}
+
+/// Runs a maneuver and collects its samples.
+pub fn run_maneuver(m: &Maneuver, options: &SimulationOptions) -> Result<(Vec<Sample<f64>>, crane_model::simulation::RunSummary<f64>)> {
+    let model = thesis_model()?;
+    let mut samples = Vec::new();
+    let summary = model
+        .simulate(m, options, |s| {
+            samples.push(*s);
+            true
+        })
+        .map_err(|e| anyhow::anyhow!("simulation failed: {e}"))?;
+    Ok((samples, summary))
+}
+
+/// Draws the thesis's two figures for a run.
+pub fn plot_run(path: &std::path::Path, title: &str, samples: &[Sample<f64>]) -> Result<()> {
+    let force: Vec<(f64, f64)> = samples.iter().map(|s| (s.boom_angle_rad.to_degrees(), s.reactions.piston_force_n / 1e3)).collect();
+    let defl = |i: usize| -> Vec<(f64, f64)> { samples.iter().map(|s| (s.boom_angle_rad.to_degrees(), s.deflection_m[i] * 1e3)).collect() };
+    let (d3, d8, d13) = (defl(0), defl(1), defl(2));
+    let fa: Vec<(f64, f64)> = samples.iter().map(|s| (s.boom_angle_rad.to_degrees(), s.reactions.jack_reaction_n / 1e3)).collect();
+    let t1 = format!("Piston force vs boom angle — {title}");
+    let t2 = format!("Transverse deflection of nodes 3, 8, 13 — {title}");
+    let t3 = format!("Rear-jack reaction F_A (eq. 4.2) — {title}");
+    write_svg(
+        path,
+        &[
+            Panel { title: &t1, x_label: "boom angle (deg)", y_label: "piston force (kN)", series: vec![Series { label: "simulated", points: &force, markers: false }] },
+            Panel {
+                title: &t2,
+                x_label: "boom angle (deg)",
+                y_label: "deflection (mm)",
+                series: vec![
+                    Series { label: "node 3", points: &d3, markers: false },
+                    Series { label: "node 8", points: &d8, markers: false },
+                    Series { label: "node 13 (tip)", points: &d13, markers: false },
+                ],
+            },
+            Panel { title: &t3, x_label: "boom angle (deg)", y_label: "F_A (kN)", series: vec![Series { label: "F_A", points: &fa, markers: false }] },
+        ],
+    )
+}
 
 /// Runs the subcommand; returns the exit code.
-pub fn run(_args: SimulateArgs) -> anyhow::Result<u8> {
-    anyhow::bail!("`crane-sim simulate` is not implemented yet")
+pub fn run(args: SimulateArgs) -> Result<u8> {
+    if args.list {
+        for (name, _) in thesis_cases() {
+            println!("{name}");
+        }
+        return Ok(0);
+    }
+    let (title, m) = maneuver(&args)?;
+    if !(args.step_ms > 0.0 && args.step_ms <= 100.0) || args.output_every == 0 {
+        bail!("--step-ms must be in (0, 100] and --output-every ≥ 1");
+    }
+    let mut options = SimulationOptions::for_type::<f64>();
+    options.step_s = args.step_ms * 1e-3;
+    options.output_every = args.output_every;
+    options.initial = match args.initial {
+        InitialArg::Equilibrium => InitialState::Equilibrium,
+        InitialArg::Listing => InitialState::ListingProjection,
+    };
+    let started = std::time::Instant::now();
+    let (samples, summary) = run_maneuver(&m, &options)?;
+    let elapsed = started.elapsed();
+    if let Some(path) = &args.out {
+        let mut f = std::io::BufWriter::new(std::fs::File::create(path).with_context(|| format!("cannot create {}", path.display()))?);
+        writeln!(f, "{CSV_HEADER}")?;
+        for s in &samples {
+            writeln!(f, "{}", csv_row(s))?;
+        }
+        f.flush()?;
+    }
+    if let Some(path) = &args.plot {
+        plot_run(path, &title, &samples)?;
+    }
+    let peak = samples.iter().map(|s| s.reactions.piston_force_n).fold(f64::MIN, f64::max);
+    let min_fa = samples.iter().map(|s| s.reactions.jack_reaction_n).fold(f64::MAX, f64::min);
+    let max_tip = samples.iter().map(|s| s.deflection_m[2].abs()).fold(0.0, f64::max);
+    let mut out = std::io::stdout().lock();
+    let _ = writeln!(out, "maneuver          {title}");
+    let _ = writeln!(out, "integrator        Newmark average acceleration, h = {} ms, {} steps, {} evaluations", args.step_ms, summary.steps, summary.evaluations);
+    let _ = writeln!(out, "wall time         {:.1} ms ({:.0}x faster than real time)", elapsed.as_secs_f64() * 1e3, m.end_s() / elapsed.as_secs_f64());
+    let _ = writeln!(out, "peak piston force {:.1} kN", peak / 1e3);
+    let _ = writeln!(out, "max |tip defl.|   {:.2} mm", max_tip * 1e3);
+    let _ = writeln!(out, "min F_A           {:.1} kN{}", min_fa / 1e3, if min_fa <= 0.0 { "  (TIPS)" } else { "" });
+    let _ = writeln!(out, "max |constraint|  {:.2e}", summary.max_constraint_violation);
+    Ok(0)
 }
