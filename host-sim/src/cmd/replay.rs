@@ -1,10 +1,216 @@
-//! `crane-sim replay` (not written yet).
+//! `crane-sim replay LOG.csv [--calibration CAL.json] [--json] [--trace FILE.csv]`
+//!
+//! Runs a recorded sensor log (SPEC §5) through the limiter core, the same
+//! `moment_limiter::replay::Replay` the firmware runs, in `f64`, and prints
+//! with the same formatters, so the output is the firmware's.
+//!
+//! Output: without `--json`, one timeline line per state change as it happens
+//! (the first sample gives the initial state), then a summary line; with
+//! `--json`, one JSON object at the end. `--trace` writes one CSV row per
+//! sample: `t_s,load_kg,rated_load_kg,utilization,state`.
+//!
+//! Exit codes: 0 the log was read to its end and never entered OVERLOAD or
+//! FAULT; 2 it entered OVERLOAD or FAULT at least once; 1 the input (log or
+//! calibration) could not be read.
+//!
+//! A malformed log: the replay stops at the first bad line; everything
+//! replayed before it is kept and printed (timeline lines and summary, or the
+//! JSON object with `"complete":false` and `"error"`; the trace file holds
+//! every replayed sample), then the error naming the line and field goes to
+//! stderr and the exit code is 1, even if an OVERLOAD or FAULT was seen before.
+
+use std::fs::File;
+use std::io::{BufRead, BufReader, BufWriter, Write as _};
+use std::path::{Path, PathBuf};
+
+use anyhow::Context as _;
+use crane_model::load_model::HookLoadModel;
+use moment_limiter::limiter::{Limiter, LimiterConfig};
+use moment_limiter::load_estimate::Calibration;
+use moment_limiter::log_format::{LogError, LogErrorKind, LogParser};
+use moment_limiter::replay::{self, Replay, ReplayEvent};
+use moment_limiter::rigid_reference::RigidCrane;
+use serde::{Deserialize, Serialize};
 
 /// Arguments of `crane-sim replay`.
 #[derive(clap::Args, Debug)]
-pub struct ReplayArgs {}
+pub struct ReplayArgs {
+    /// Sensor log: CSV with `t_s,p1_bar,p2_bar,boom_angle_deg` [and `true_load_kg`].
+    pub log: PathBuf,
+    /// Calibration from `crane-sim calibrate` (friction per direction, offsets).
+    #[arg(long)]
+    pub calibration: Option<PathBuf>,
+    /// Print one JSON object instead of the timeline.
+    #[arg(long)]
+    pub json: bool,
+    /// Write a per-sample CSV trace `t_s,load_kg,rated_load_kg,utilization,state`.
+    #[arg(long)]
+    pub trace: Option<PathBuf>,
+}
+
+/// The crane model the host tools (replay, calibrate) run the limiter on.
+/// The single place to change it.
+pub fn crane_load_model() -> impl HookLoadModel<f64> {
+    // TODO(lead): real model. This is the rigid quasi-static stand-in.
+    RigidCrane::coles_930()
+}
+
+/// The calibration file (`CAL.json`). The six values of
+/// `moment_limiter::load_estimate::Calibration`; a missing one is 0 (as the
+/// firmware's reader does). The other members are informational, written by
+/// `crane-sim calibrate`. Any other member is refused, so a misspelt key
+/// cannot silently zero a friction.
+#[derive(Debug, Clone, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct CalibrationFile {
+    /// Friction while luffing up (N).
+    pub friction_up_n: f64,
+    /// Friction while luffing down (N).
+    pub friction_down_n: f64,
+    /// Zero-load force offset (N).
+    pub force_offset_n: f64,
+    /// p1 zero offset (bar).
+    pub p1_offset_bar: f64,
+    /// p2 zero offset (bar).
+    pub p2_offset_bar: f64,
+    /// Pendulum zero offset (degrees).
+    pub angle_offset_deg: f64,
+    /// Informational: samples moving up it was learned from.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub samples_up: Option<u32>,
+    /// Informational: samples moving down it was learned from.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub samples_down: Option<u32>,
+    /// Informational: mean residual force moving up (N).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mean_residual_up_n: Option<f64>,
+    /// Informational: mean residual force moving down (N).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mean_residual_down_n: Option<f64>,
+}
+
+impl CalibrationFile {
+    /// The limiter's calibration.
+    pub fn calibration(&self) -> Calibration<f64> {
+        Calibration {
+            friction_up_n: self.friction_up_n,
+            friction_down_n: self.friction_down_n,
+            force_offset_n: self.force_offset_n,
+            p1_offset_bar: self.p1_offset_bar,
+            p2_offset_bar: self.p2_offset_bar,
+            angle_offset_deg: self.angle_offset_deg,
+        }
+    }
+}
+
+/// Reads and checks a calibration file.
+pub fn load_calibration(path: &Path) -> anyhow::Result<Calibration<f64>> {
+    let text = std::fs::read_to_string(path)
+        .with_context(|| format!("cannot read calibration {}", path.display()))?;
+    let file: CalibrationFile = serde_json::from_str(&text)
+        .with_context(|| format!("calibration {} is not valid", path.display()))?;
+    let cal = file.calibration();
+    anyhow::ensure!(
+        cal.is_valid(),
+        "calibration {}: values must be finite and frictions not negative",
+        path.display()
+    );
+    Ok(cal)
+}
+
+/// Reads one line (without `\n`) as UTF-8; `Ok(None)` at the end.
+pub fn read_line<R: BufRead>(
+    reader: &mut R,
+    buf: &mut Vec<u8>,
+) -> Result<Option<String>, LogErrorKind> {
+    buf.clear();
+    match reader.read_until(b'\n', buf) {
+        Ok(0) => Ok(None),
+        Ok(_) => {
+            if buf.last() == Some(&b'\n') {
+                buf.pop();
+            }
+            String::from_utf8(std::mem::take(buf)).map(Some).map_err(|_| LogErrorKind::NotUtf8)
+        }
+        Err(_) => Err(LogErrorKind::Unreadable),
+    }
+}
 
 /// Runs the subcommand; returns the exit code.
-pub fn run(_args: ReplayArgs) -> anyhow::Result<u8> {
-    anyhow::bail!("`crane-sim replay` is not implemented yet")
+pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
+    let file = File::open(&args.log)
+        .with_context(|| format!("cannot open log {}", args.log.display()))?;
+    let mut config = LimiterConfig::standard();
+    if let Some(path) = &args.calibration {
+        config.calibration = load_calibration(path)?;
+    }
+    let limiter = Limiter::new(crane_load_model(), config).map_err(|e| anyhow::anyhow!("{e}"))?;
+    let mut trace = match &args.trace {
+        Some(path) => {
+            let mut w = BufWriter::new(
+                File::create(path).with_context(|| format!("cannot create {}", path.display()))?,
+            );
+            let mut s = String::new();
+            replay::write_trace_header(&mut s)?;
+            w.write_all(s.as_bytes())?;
+            Some(w)
+        }
+        None => None,
+    };
+
+    let mut replay = Replay::new(limiter);
+    let mut parser = LogParser::<f64>::new();
+    let mut events: Vec<ReplayEvent<f64>> = Vec::new();
+    let mut reader = BufReader::new(file);
+    let mut buf = Vec::new();
+    let stdout = std::io::stdout();
+    let mut out = stdout.lock();
+    let mut text = String::new();
+
+    let error: Option<LogError> = loop {
+        let line = match read_line(&mut reader, &mut buf) {
+            Ok(Some(line)) => line,
+            Ok(None) => break parser.finish().err(),
+            Err(kind) => break Some(parser.reject_next_line(kind)),
+        };
+        let record = match parser.feed_line(&line) {
+            Ok(Some(record)) => record,
+            Ok(None) => continue,
+            Err(e) => break Some(e),
+        };
+        let (report, event) = replay.feed(&record);
+        if let Some(w) = trace.as_mut() {
+            text.clear();
+            replay::write_trace_line(&mut text, &report)?;
+            w.write_all(text.as_bytes())?;
+        }
+        if let Some(event) = event {
+            if !args.json {
+                text.clear();
+                replay::write_event_line(&mut text, &event)?;
+                out.write_all(text.as_bytes())?;
+            }
+            events.push(event);
+        }
+    };
+
+    if let Some(mut w) = trace {
+        w.flush()?;
+    }
+    let summary = replay.summary();
+    text.clear();
+    if args.json {
+        replay::write_json(&mut text, &summary, events.iter(), error.as_ref())?;
+    } else {
+        replay::write_summary_line(&mut text, &summary)?;
+    }
+    out.write_all(text.as_bytes())?;
+    out.flush()?;
+    match error {
+        Some(e) => {
+            eprintln!("error: {}: {e}", args.log.display());
+            Ok(1)
+        }
+        None => Ok(summary.exit_code()),
+    }
 }
