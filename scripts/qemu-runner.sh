@@ -27,6 +27,8 @@ semi="enable=on,target=native,arg=firmware"
 for a in "$@"; do
     if [ -e "$a" ]; then
         a=$(realpath -- "$a")
+    elif [[ "$a" == --*=* && -e "${a#*=}" ]]; then
+        a="${a%%=*}=$(realpath -- "${a#*=}")"
     fi
     case "$a" in
         *[[:space:],]*)
