@@ -9,11 +9,18 @@ fn bin() -> Command {
 }
 
 fn example(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/logs").join(name)
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../examples/logs")
+        .join(name)
 }
 
 fn replay(log: &Path, extra: &[&str]) -> Output {
-    bin().arg("replay").arg(log).args(extra).output().expect("run crane-sim")
+    bin()
+        .arg("replay")
+        .arg(log)
+        .args(extra)
+        .output()
+        .expect("run crane-sim")
 }
 
 fn text(b: &[u8]) -> String {
@@ -21,7 +28,8 @@ fn text(b: &[u8]) -> String {
 }
 
 fn json(out: &Output) -> serde_json::Value {
-    serde_json::from_slice(&out.stdout).unwrap_or_else(|e| panic!("bad JSON ({e}): {}", text(&out.stdout)))
+    serde_json::from_slice(&out.stdout)
+        .unwrap_or_else(|e| panic!("bad JSON ({e}): {}", text(&out.stdout)))
 }
 
 #[test]
@@ -40,10 +48,18 @@ fn safe_lift_exits_0_and_stays_normal() {
 #[test]
 fn overload_while_lowering_exits_2() {
     let cal = example("cal.json");
-    let out = replay(&example("overload_lowering.csv"), &["--json", "--calibration", cal.to_str().unwrap()]);
+    let out = replay(
+        &example("overload_lowering.csv"),
+        &["--json", "--calibration", cal.to_str().unwrap()],
+    );
     assert_eq!(out.status.code(), Some(2), "{}", text(&out.stderr));
     let j = json(&out);
-    let states: Vec<&str> = j["events"].as_array().unwrap().iter().map(|e| e["state"].as_str().unwrap()).collect();
+    let states: Vec<&str> = j["events"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|e| e["state"].as_str().unwrap())
+        .collect();
     assert_eq!(states, ["NORMAL", "WARNING", "OVERLOAD"]);
     let overload = &j["events"][2];
     assert!(overload["utilization"].as_f64().unwrap() >= 1.0);
@@ -66,8 +82,15 @@ fn malformed_example_keeps_what_was_read_and_exits_1() {
     let out = replay(&example("malformed.csv"), &[]);
     assert_eq!(out.status.code(), Some(1));
     let stderr = text(&out.stderr);
-    assert!(stderr.contains("line 104: field `p1_bar` is not a number"), "{stderr}");
-    assert!(text(&out.stdout).contains("samples=100 "), "{}", text(&out.stdout));
+    assert!(
+        stderr.contains("line 104: field `p1_bar` is not a number"),
+        "{stderr}"
+    );
+    assert!(
+        text(&out.stdout).contains("samples=100 "),
+        "{}",
+        text(&out.stdout)
+    );
     // JSON mode: the object of what was replayed, marked incomplete.
     let out = replay(&example("malformed.csv"), &["--json"]);
     assert_eq!(out.status.code(), Some(1));
@@ -91,26 +114,49 @@ fn malformed_logs_name_line_and_field() {
     let header = "# comment\nt_s,p1_bar,p2_bar,boom_angle_deg\n";
     let good = "0.00,60.0,5.0,50.0\n0.01,60.1,5.1,50.0\n";
     let cases: [(String, &str); 6] = [
-        ("# comment\nt_s,p1_bar,boom_angle_deg\n0,60,50\n".into(), "line 2: header has no column `p2_bar`"),
-        (format!("{header}{good}0.02,60.2,five,50.0\n"), "line 5: field `p2_bar` is not a number"),
-        (format!("{header}{good}0.02,60.2,5.0\n"), "line 5: field `boom_angle_deg` missing"),
-        (format!("{header}{good}0.005,60.2,5.0,50.0\n"), "line 5: field `t_s` goes backwards"),
+        (
+            "# comment\nt_s,p1_bar,boom_angle_deg\n0,60,50\n".into(),
+            "line 2: header has no column `p2_bar`",
+        ),
+        (
+            format!("{header}{good}0.02,60.2,five,50.0\n"),
+            "line 5: field `p2_bar` is not a number",
+        ),
+        (
+            format!("{header}{good}0.02,60.2,5.0\n"),
+            "line 5: field `boom_angle_deg` missing",
+        ),
+        (
+            format!("{header}{good}0.005,60.2,5.0,50.0\n"),
+            "line 5: field `t_s` goes backwards",
+        ),
         (String::new(), "line 1: empty log"),
         (header.to_string(), "line 3: no data rows"),
     ];
     for (content, expected) in cases {
         let (code, _, stderr) = replay_text(&content);
         assert_eq!(code, Some(1), "{expected}: {stderr}");
-        assert!(stderr.contains(expected), "expected `{expected}` in `{stderr}`");
+        assert!(
+            stderr.contains(expected),
+            "expected `{expected}` in `{stderr}`"
+        );
         assert!(!stderr.contains("panicked"), "{stderr}");
     }
     // Not UTF-8.
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("bin.csv");
-    std::fs::write(&path, b"t_s,p1_bar,p2_bar,boom_angle_deg\n0,\xff\xfe,5,50\n").unwrap();
+    std::fs::write(
+        &path,
+        b"t_s,p1_bar,p2_bar,boom_angle_deg\n0,\xff\xfe,5,50\n",
+    )
+    .unwrap();
     let out = replay(&path, &[]);
     assert_eq!(out.status.code(), Some(1));
-    assert!(text(&out.stderr).contains("line 2: not valid UTF-8"), "{}", text(&out.stderr));
+    assert!(
+        text(&out.stderr).contains("line 2: not valid UTF-8"),
+        "{}",
+        text(&out.stderr)
+    );
     // Missing file.
     let out = replay(&dir.path().join("nope.csv"), &[]);
     assert_eq!(out.status.code(), Some(1));
@@ -129,13 +175,20 @@ fn out_of_range_value_in_a_log_is_a_fault_not_a_format_error() {
 fn trace_has_one_row_per_sample() {
     let dir = tempfile::tempdir().unwrap();
     let trace = dir.path().join("trace.csv");
-    let out = replay(&example("wire_break.csv"), &["--trace", trace.to_str().unwrap()]);
+    let out = replay(
+        &example("wire_break.csv"),
+        &["--trace", trace.to_str().unwrap()],
+    );
     assert_eq!(out.status.code(), Some(2));
     let t = std::fs::read_to_string(&trace).unwrap();
     let lines: Vec<&str> = t.lines().collect();
     assert_eq!(lines[0], "t_s,load_kg,rated_load_kg,utilization,state");
     assert_eq!(lines.len(), 602);
-    assert!(lines[1].starts_with("0.000,") && lines[1].ends_with(",NORMAL"), "{}", lines[1]);
+    assert!(
+        lines[1].starts_with("0.000,") && lines[1].ends_with(",NORMAL"),
+        "{}",
+        lines[1]
+    );
     // After the wire break: no estimate, FAULT.
     assert_eq!(lines[302], "6.020,,,,FAULT");
 }
@@ -153,19 +206,33 @@ fn calibrate_learns_friction_and_replay_uses_it() {
         .output()
         .unwrap();
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
-    let j: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&cal).unwrap()).unwrap();
+    let j: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&cal).unwrap()).unwrap();
     // The logs were made with 12 kN friction up and 8 kN down.
     let up = j["mean_residual_up_n"].as_f64().unwrap();
     let down = j["mean_residual_down_n"].as_f64().unwrap();
     assert!((up - 12_000.0).abs() < 1_000.0, "{up}");
     assert!((down + 8_000.0).abs() < 1_000.0, "{down}");
     // Only one direction: refused.
-    let out = bin().arg("calibrate").arg(example("unloaded_up.csv")).arg("--out").arg(&cal).output().unwrap();
+    let out = bin()
+        .arg("calibrate")
+        .arg(example("unloaded_up.csv"))
+        .arg("--out")
+        .arg(&cal)
+        .output()
+        .unwrap();
     assert_eq!(out.status.code(), Some(1));
-    assert!(text(&out.stderr).contains("moving down"), "{}", text(&out.stderr));
+    assert!(
+        text(&out.stderr).contains("moving down"),
+        "{}",
+        text(&out.stderr)
+    );
     // A misspelt calibration key is refused by replay.
     let bad = dir.path().join("bad.json");
     std::fs::write(&bad, r#"{"friction_upn": 1000}"#).unwrap();
-    let out = replay(&example("safe_lift.csv"), &["--calibration", bad.to_str().unwrap()]);
+    let out = replay(
+        &example("safe_lift.csv"),
+        &["--calibration", bad.to_str().unwrap()],
+    );
     assert_eq!(out.status.code(), Some(1));
 }

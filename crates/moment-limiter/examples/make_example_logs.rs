@@ -47,19 +47,50 @@ fn main() -> std::io::Result<()> {
     std::fs::create_dir_all(dir)?;
     let keep = |_: usize, _: f64, p1: String| p1;
     let files = [
-        ("unloaded_up.csv", csv("unloaded boom up (for calibrate)", &manoeuvre(0.0, 40.0, 80.0, 11), &keep)),
-        ("unloaded_down.csv", csv("unloaded boom down (for calibrate)", &manoeuvre(0.0, 80.0, 40.0, 12), &keep)),
-        ("safe_lift.csv", csv("safe lift: 3000 kg raised 40 -> 80 deg", &manoeuvre(3000.0, 40.0, 80.0, 13), &keep)),
+        (
+            "unloaded_up.csv",
+            csv(
+                "unloaded boom up (for calibrate)",
+                &manoeuvre(0.0, 40.0, 80.0, 11),
+                &keep,
+            ),
+        ),
+        (
+            "unloaded_down.csv",
+            csv(
+                "unloaded boom down (for calibrate)",
+                &manoeuvre(0.0, 80.0, 40.0, 12),
+                &keep,
+            ),
+        ),
+        (
+            "safe_lift.csv",
+            csv(
+                "safe lift: 3000 kg raised 40 -> 80 deg",
+                &manoeuvre(3000.0, 40.0, 80.0, 13),
+                &keep,
+            ),
+        ),
         (
             "overload_lowering.csv",
-            csv("overload while lowering: 8000 kg lowered 75 -> 40 deg", &manoeuvre(8000.0, 75.0, 40.0, 14), &keep),
+            csv(
+                "overload while lowering: 8000 kg lowered 75 -> 40 deg",
+                &manoeuvre(8000.0, 75.0, 40.0, 14),
+                &keep,
+            ),
         ),
         (
             "wire_break.csv",
             csv(
                 "wire break: safe lift, p1 loop broken at t = 6.00 s (0 mA reads -50 bar)",
                 &manoeuvre(3000.0, 40.0, 80.0, 15),
-                &|_, t, p1| if t >= 6.0 - 1e-9 { "-50.00".to_string() } else { p1 },
+                &|_, t, p1| {
+                    if t >= 6.0 - 1e-9 {
+                        "-50.00".to_string()
+                    } else {
+                        p1
+                    }
+                },
             ),
         ),
         (

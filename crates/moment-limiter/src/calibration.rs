@@ -67,7 +67,10 @@ impl<T: Real> Default for CalibrationLearner<T> {
 impl<T: Real> CalibrationLearner<T> {
     /// No samples yet.
     pub fn new() -> Self {
-        Self { up: (T::lit(0.0), 0), down: (T::lit(0.0), 0) }
+        Self {
+            up: (T::lit(0.0), 0),
+            down: (T::lit(0.0), 0),
+        }
     }
 
     /// Adds one sample of an unloaded run (samples with a still boom are ignored).

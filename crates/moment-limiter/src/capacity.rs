@@ -110,7 +110,11 @@ pub struct Capacity<T> {
 impl<T: Real> Capacity<T> {
     /// Safety factor 1.5, structural limit 10 000 kg, no chart.
     pub fn standard() -> Self {
-        Self { safety_factor: T::lit(1.5), max_rated_kg: T::lit(10_000.0), chart: None }
+        Self {
+            safety_factor: T::lit(1.5),
+            max_rated_kg: T::lit(10_000.0),
+            chart: None,
+        }
     }
 
     /// `true` when the safety factor is finite and at least 1 and the
@@ -150,7 +154,11 @@ impl<T: Real> Capacity<T> {
         if let Some(chart) = &self.chart {
             rated = rated.min(chart.rated_kg(radius_m));
         }
-        Ok(Rating { tipping_load_kg: tip, rated_load_kg: rated, radius_m })
+        Ok(Rating {
+            tipping_load_kg: tip,
+            rated_load_kg: rated,
+            radius_m,
+        })
     }
 }
 
@@ -160,13 +168,17 @@ mod tests {
 
     #[test]
     fn chart_interpolates_and_refuses_outside() {
-        let c = ChartTable::from_points(&[(3.0_f64, 10000.0), (5.0, 6000.0), (10.0, 2000.0)]).unwrap();
+        let c =
+            ChartTable::from_points(&[(3.0_f64, 10000.0), (5.0, 6000.0), (10.0, 2000.0)]).unwrap();
         assert_eq!(c.rated_kg(2.0), 10000.0);
         assert_eq!(c.rated_kg(4.0), 8000.0);
         assert_eq!(c.rated_kg(7.5), 4000.0);
         assert_eq!(c.rated_kg(10.0), 2000.0);
         assert_eq!(c.rated_kg(10.1), 0.0);
-        assert_eq!(ChartTable::from_points(&[(3.0_f64, 1.0), (3.0, 1.0)]), Err(ChartError::NotIncreasing));
+        assert_eq!(
+            ChartTable::from_points(&[(3.0_f64, 1.0), (3.0, 1.0)]),
+            Err(ChartError::NotIncreasing)
+        );
         assert_eq!(ChartTable::<f64>::from_points(&[]), Err(ChartError::Size));
     }
 }

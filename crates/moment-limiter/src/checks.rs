@@ -103,11 +103,17 @@ pub struct PlausibilityConfig<T> {
 impl<T: Real> PlausibilityConfig<T> {
     /// The defaults given in the module doc.
     pub fn standard() -> Self {
-        let pressure = ChannelLimits { max_rate_per_s: T::lit(5000.0), stuck_band: T::lit(0.0) };
+        let pressure = ChannelLimits {
+            max_rate_per_s: T::lit(5000.0),
+            stuck_band: T::lit(0.0),
+        };
         Self {
             p1: pressure,
             p2: pressure,
-            angle: ChannelLimits { max_rate_per_s: T::lit(60.0), stuck_band: T::lit(0.0) },
+            angle: ChannelLimits {
+                max_rate_per_s: T::lit(60.0),
+                stuck_band: T::lit(0.0),
+            },
             stuck_time_s: T::lit(2.0),
         }
     }
@@ -120,7 +126,10 @@ impl<T: Real> PlausibilityConfig<T> {
                 && l.stuck_band.is_finite()
                 && l.stuck_band >= T::lit(0.0)
         };
-        ok(&self.p1) && ok(&self.p2) && ok(&self.angle) && self.stuck_time_s.is_finite()
+        ok(&self.p1)
+            && ok(&self.p2)
+            && ok(&self.angle)
+            && self.stuck_time_s.is_finite()
             && self.stuck_time_s > T::lit(0.0)
     }
 
@@ -162,7 +171,10 @@ impl<T: Real> PlausibilityMonitor<T> {
             hold_s: T::lit(0.0),
             frozen_while_others_live_s: T::lit(0.0),
         };
-        Self { config, history: [empty; 3] }
+        Self {
+            config,
+            history: [empty; 3],
+        }
     }
 
     /// Forgets the last values (not the stuck timers): called when a cycle had
@@ -236,7 +248,13 @@ mod tests {
         assert!(m.check([50.0, 5.0, 45.0], 0.01).is_ok());
         assert!(m.check([50.2, 5.1, 45.01], 0.01).is_ok());
         let f = m.check([150.0, 5.0, 45.02], 0.01).unwrap_err();
-        assert_eq!(f, SensorFault { channel: Channel::PistonSidePressure, kind: FaultKind::RateOfChange });
+        assert_eq!(
+            f,
+            SensorFault {
+                channel: Channel::PistonSidePressure,
+                kind: FaultKind::RateOfChange
+            }
+        );
     }
 
     #[test]
@@ -251,7 +269,13 @@ mod tests {
         for k in 0..400 {
             let x = f64::from(k) * 0.01;
             if let Err(f) = m.check([50.0 + x, 5.0, 45.0 + x], 0.01) {
-                assert_eq!(f, SensorFault { channel: Channel::RodSidePressure, kind: FaultKind::Stuck });
+                assert_eq!(
+                    f,
+                    SensorFault {
+                        channel: Channel::RodSidePressure,
+                        kind: FaultKind::Stuck
+                    }
+                );
                 t_fault = Some(x);
                 break;
             }

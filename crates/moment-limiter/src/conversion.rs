@@ -112,9 +112,14 @@ pub struct SensorConversion<T> {
 impl<T: Real> SensorConversion<T> {
     /// The front end described in the module doc.
     pub fn standard() -> Self {
-        let transducer = PressureTransducer { span_bar: T::lit(PRESSURE_SPAN_BAR) };
+        let transducer = PressureTransducer {
+            span_bar: T::lit(PRESSURE_SPAN_BAR),
+        };
         Self {
-            adc: AdcFrontEnd { vref_v: T::lit(3.3), shunt_ohm: T::lit(150.0) },
+            adc: AdcFrontEnd {
+                vref_v: T::lit(3.3),
+                shunt_ohm: T::lit(150.0),
+            },
             p1: transducer,
             p2: transducer,
             angle: AnglePotentiometer {
@@ -174,7 +179,10 @@ mod tests {
         // One count is about 0.067 bar.
         assert!((p - 100.0).abs() < 0.07, "{p}");
         assert_eq!(c.pressure(&c.p1, 0), Err(FaultKind::OpenCircuit));
-        assert_eq!(c.pressure(&c.p1, ADC_MAX_COUNTS), Err(FaultKind::ShortCircuit));
+        assert_eq!(
+            c.pressure(&c.p1, ADC_MAX_COUNTS),
+            Err(FaultKind::ShortCircuit)
+        );
         // 3.7 mA passes NAMUR but is −3.75 bar: inside −2 %.
         let c37 = c.adc.counts_for_milliamps(3.7);
         assert!(c.pressure(&c.p1, c37).is_ok());

@@ -51,7 +51,10 @@ impl<T: Copy, const N: usize> Default for EventLog<T, N> {
 impl<T: Copy, const N: usize> EventLog<T, N> {
     /// An empty log.
     pub fn new() -> Self {
-        Self { events: heapless::Deque::new(), dropped: 0 }
+        Self {
+            events: heapless::Deque::new(),
+            dropped: 0,
+        }
     }
 
     /// Records an event, dropping the oldest if the log is full.

@@ -97,7 +97,14 @@ pub struct FaultInjector<S> {
 impl<S: SensorInputs> FaultInjector<S> {
     /// Wraps `inner` with no fault active.
     pub fn new(inner: S, seed: u32) -> Self {
-        Self { inner, slots: [Slot { fault: None, held: None }; 3], rng: Rng::new(seed) }
+        Self {
+            inner,
+            slots: [Slot {
+                fault: None,
+                held: None,
+            }; 3],
+            rng: Rng::new(seed),
+        }
     }
     /// Sets (or with `None` clears) the fault on a channel.
     pub fn set_fault(&mut self, channel: Channel, fault: Option<InjectedFault>) {
@@ -139,9 +146,10 @@ impl<S: SensorInputs> SensorInputs for FaultInjector<S> {
                 Ok(offset_counts(value, f64::from(per_mille)))
             }
             Some(InjectedFault::Nan) => Err(InputError::BadFrame),
-            Some(InjectedFault::Noise { per_mille }) => {
-                Ok(offset_counts(value, f64::from(per_mille) * self.rng.symmetric_unit()))
-            }
+            Some(InjectedFault::Noise { per_mille }) => Ok(offset_counts(
+                value,
+                f64::from(per_mille) * self.rng.symmetric_unit(),
+            )),
         }
     }
 }
@@ -158,7 +166,14 @@ impl<T: Real> FrameFaultInjector<T> {
     /// An injector with no fault active; `conversion` gives the values an open
     /// or shorted sensor reads.
     pub fn new(conversion: SensorConversion<T>, seed: u32) -> Self {
-        Self { conversion, slots: [Slot { fault: None, held: None }; 3], rng: Rng::new(seed) }
+        Self {
+            conversion,
+            slots: [Slot {
+                fault: None,
+                held: None,
+            }; 3],
+            rng: Rng::new(seed),
+        }
     }
 
     /// Sets (or with `None` clears) the fault on a channel.
@@ -174,19 +189,19 @@ impl<T: Real> FrameFaultInjector<T> {
         let mut out = frame;
         for channel in Channel::ALL {
             let (value, span, at_counts): (&mut T, T, &dyn Fn(u16) -> T) = match channel {
-                Channel::PistonSidePressure => (
-                    &mut out.p1_bar,
-                    T::lit(PRESSURE_SPAN_BAR),
-                    &|n| c.raw_pressure_bar(&c.p1, n),
-                ),
-                Channel::RodSidePressure => (
-                    &mut out.p2_bar,
-                    T::lit(PRESSURE_SPAN_BAR),
-                    &|n| c.raw_pressure_bar(&c.p2, n),
-                ),
-                Channel::BoomAngle => (&mut out.boom_angle_deg, T::lit(90.0), &|n| c.angle.degrees(n)),
+                Channel::PistonSidePressure => (&mut out.p1_bar, T::lit(PRESSURE_SPAN_BAR), &|n| {
+                    c.raw_pressure_bar(&c.p1, n)
+                }),
+                Channel::RodSidePressure => (&mut out.p2_bar, T::lit(PRESSURE_SPAN_BAR), &|n| {
+                    c.raw_pressure_bar(&c.p2, n)
+                }),
+                Channel::BoomAngle => (&mut out.boom_angle_deg, T::lit(90.0), &|n| {
+                    c.angle.degrees(n)
+                }),
             };
-            let Some(slot) = self.slots.get_mut(channel_index(channel)) else { continue };
+            let Some(slot) = self.slots.get_mut(channel_index(channel)) else {
+                continue;
+            };
             let offset = |pm: f64| span * T::lit(pm / 1000.0);
             match slot.fault {
                 None => {}

@@ -31,7 +31,10 @@ pub struct LowPass<T> {
 impl<T: Real> LowPass<T> {
     /// A filter whose two stages each have cut-off `cutoff_hz` (must be > 0).
     pub fn new(cutoff_hz: T) -> Self {
-        Self { tau_s: T::lit(1.0) / (T::two_pi() * cutoff_hz), stages: None }
+        Self {
+            tau_s: T::lit(1.0) / (T::two_pi() * cutoff_hz),
+            stages: None,
+        }
     }
 
     /// Low-frequency group delay 2τ (s): the lag behind a ramp.
@@ -51,7 +54,11 @@ impl<T: Real> LowPass<T> {
         let (s1, s2) = match self.stages {
             None => (x, x),
             Some((s1, s2)) => {
-                let dt = if dt_s > T::lit(0.0) { dt_s } else { T::lit(0.0) };
+                let dt = if dt_s > T::lit(0.0) {
+                    dt_s
+                } else {
+                    T::lit(0.0)
+                };
                 let a = T::lit(1.0) - (-dt / self.tau_s).exp();
                 let s1 = s1 + a * (x - s1);
                 (s1, s2 + a * (s1 - s2))
@@ -91,7 +98,11 @@ mod tests {
             y = f.update(f64::from(k) * 0.01, 0.01);
         }
         let lag = 9.99 - y; // input slope is 1 per second
-        assert!((lag - f.delay_s()).abs() < 0.01, "lag {lag} vs {}", f.delay_s());
+        assert!(
+            (lag - f.delay_s()).abs() < 0.01,
+            "lag {lag} vs {}",
+            f.delay_s()
+        );
     }
 
     #[test]

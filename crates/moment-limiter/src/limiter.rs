@@ -34,14 +34,15 @@ use crane_model::load_model::{BoomState, HookLoadModel};
 use crane_model::Real;
 
 use crate::capacity::{Capacity, CapacityError};
-use crate::checks::{channel_name, FaultKind, PlausibilityConfig, PlausibilityMonitor, SensorFault};
+use crate::checks::{
+    channel_name, FaultKind, PlausibilityConfig, PlausibilityMonitor, SensorFault,
+};
 use crate::conversion::SensorConversion;
 use crate::event_log::{Event, EventKind, EventLog};
 use crate::filter::LowPass;
 use crate::io::{Channel, OutputCommand, OutputError, Outputs, SensorInputs};
 use crate::load_estimate::{
-    estimate_load_kg, Calibration, Direction, DirectionDetector, DirectionThresholds,
-    EstimateError,
+    estimate_load_kg, Calibration, Direction, DirectionDetector, DirectionThresholds, EstimateError,
 };
 use crate::piston_force::piston_force_n;
 use crate::state_machine::{CycleInput, LimiterState, StateMachine, Thresholds};
@@ -330,19 +331,30 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         let conv = &self.config.conversion;
         let fault = |channel: Channel| move |kind: FaultKind| SensorFault { channel, kind };
         let read = |inputs: &mut S, channel: Channel| {
-            inputs.read_counts(channel).map_err(|e| SensorFault { channel, kind: FaultKind::Input(e) })
+            inputs.read_counts(channel).map_err(|e| SensorFault {
+                channel,
+                kind: FaultKind::Input(e),
+            })
         };
         let c1 = read(inputs, Channel::PistonSidePressure)?;
-        let p1 = conv.pressure(&conv.p1, c1).map_err(fault(Channel::PistonSidePressure))?;
+        let p1 = conv
+            .pressure(&conv.p1, c1)
+            .map_err(fault(Channel::PistonSidePressure))?;
         let c2 = read(inputs, Channel::RodSidePressure)?;
-        let p2 = conv.pressure(&conv.p2, c2).map_err(fault(Channel::RodSidePressure))?;
+        let p2 = conv
+            .pressure(&conv.p2, c2)
+            .map_err(fault(Channel::RodSidePressure))?;
         let ca = read(inputs, Channel::BoomAngle)?;
         let a = conv.boom_angle(ca).map_err(fault(Channel::BoomAngle))?;
         Ok((p1, p2, a))
     }
 
     /// Stages 2–6, shared by both entries.
-    fn step_readings(&mut self, t_s: T, readings: Result<Readings<T>, SensorFault>) -> StepReport<T> {
+    fn step_readings(
+        &mut self,
+        t_s: T,
+        readings: Result<Readings<T>, SensorFault>,
+    ) -> StepReport<T> {
         // Clock.
         let dt = match self.last_t_s {
             None => Some(T::lit(0.0)),
@@ -374,7 +386,10 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
                 Some(Fault::Sensor(sensor))
             }
             (None, Ok((p1, p2, angle))) => {
-                match self.monitor.check([p1.bar(), p2.bar(), angle.degrees()], dt_s) {
+                match self
+                    .monitor
+                    .check([p1.bar(), p2.bar(), angle.degrees()], dt_s)
+                {
                     Err(sensor) => {
                         self.restart_signal_chain();
                         Some(Fault::Sensor(sensor))
@@ -416,12 +431,23 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             }));
         }
         if self.state != Some(state) {
-            let cause = if state == LimiterState::Fault { fault } else { None };
+            let cause = if state == LimiterState::Fault {
+                fault
+            } else {
+                None
+            };
             self.log.push(event(EventKind::Entered(state, cause)));
         }
         self.state = Some(state);
 
-        StepReport { t_s, state, command: state.command(), measurement, estimate, fault }
+        StepReport {
+            t_s,
+            state,
+            command: state.command(),
+            measurement,
+            estimate,
+            fault,
+        }
     }
 
     /// After a bad cycle the filters restart settled on the next good sample,
@@ -435,11 +461,19 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     }
 
     /// Stage 2: force, filters, rate and direction.
-    fn measure(&mut self, p1: PressureBar<T>, p2: PressureBar<T>, angle: BoomAngle<T>, dt_s: T) -> Measurement<T> {
+    fn measure(
+        &mut self,
+        p1: PressureBar<T>,
+        p2: PressureBar<T>,
+        angle: BoomAngle<T>,
+        dt_s: T,
+    ) -> Measurement<T> {
         let cal = &self.config.calibration;
         let force = piston_force_n(p1, p2, cal.p1_offset_bar, cal.p2_offset_bar);
         let force_f = self.force_filter.update(force, dt_s);
-        let angle_f = self.angle_filter.update(angle.degrees() - cal.angle_offset_deg, dt_s);
+        let angle_f = self
+            .angle_filter
+            .update(angle.degrees() - cal.angle_offset_deg, dt_s);
         let raw_rate = match self.previous_angle_deg {
             Some(prev) if dt_s > T::lit(0.0) => (angle_f - prev) / dt_s,
             _ => self.rate_filter.output().unwrap_or(T::lit(0.0)),
@@ -454,7 +488,10 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             rate_deg_s: rate_f,
             direction,
             friction_direction: self.direction.friction_direction(),
-            boom: BoomState { angle_rad: angle_f * to_rad, rate_rad_s: rate_f * to_rad },
+            boom: BoomState {
+                angle_rad: angle_f * to_rad,
+                rate_rad_s: rate_f * to_rad,
+            },
         }
     }
 
@@ -468,7 +505,11 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             m.friction_direction,
         )
         .map_err(Fault::Estimate)?;
-        let rating = self.config.capacity.rating(&self.model, m.boom).map_err(Fault::Capacity)?;
+        let rating = self
+            .config
+            .capacity
+            .rating(&self.model, m.boom)
+            .map_err(Fault::Capacity)?;
         let ceiling = T::lit(UTILIZATION_CEILING);
         let utilization = if rating.rated_load_kg > T::lit(0.0) {
             (load_kg / rating.rated_load_kg).min(ceiling)

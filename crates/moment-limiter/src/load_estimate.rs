@@ -54,7 +54,10 @@ impl<T: Real> DirectionThresholds<T> {
     /// Defaults: start at 0.15 °/s, stop below 0.05 °/s (the thesis's slowest
     /// manoeuvre runs at about 1.3 °/s).
     pub fn standard() -> Self {
-        Self { start_deg_s: T::lit(0.15), stop_deg_s: T::lit(0.05) }
+        Self {
+            start_deg_s: T::lit(0.15),
+            stop_deg_s: T::lit(0.05),
+        }
     }
     /// `true` when 0 < stop ≤ start and both are finite.
     pub fn is_valid(&self) -> bool {
@@ -75,7 +78,11 @@ pub struct DirectionDetector<T> {
 impl<T: Real> DirectionDetector<T> {
     /// A detector that starts with a still boom and no motion history.
     pub fn new(thresholds: DirectionThresholds<T>) -> Self {
-        Self { thresholds, current: Direction::Still, last_moving: None }
+        Self {
+            thresholds,
+            current: Direction::Still,
+            last_moving: None,
+        }
     }
 
     /// Updates with the filtered angle rate (°/s) and returns the direction.

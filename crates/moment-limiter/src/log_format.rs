@@ -170,7 +170,12 @@ impl<T: Real> Default for LogParser<T> {
 impl<T: Real> LogParser<T> {
     /// A parser before the first line.
     pub fn new() -> Self {
-        Self { line: 0, columns: None, last_t_s: None, samples: 0 }
+        Self {
+            line: 0,
+            columns: None,
+            last_t_s: None,
+            samples: 0,
+        }
     }
 
     /// Number of lines fed so far (= the line number of the last one).
@@ -187,7 +192,10 @@ impl<T: Real> LogParser<T> {
     /// decode or read it): counts the line and returns the error.
     pub fn reject_next_line(&mut self, kind: LogErrorKind) -> LogError {
         self.line = self.line.saturating_add(1);
-        LogError { line: self.line, kind }
+        LogError {
+            line: self.line,
+            kind,
+        }
     }
 
     /// Parses the next line (without its line ending; a trailing `\r` is
@@ -196,7 +204,10 @@ impl<T: Real> LogParser<T> {
     pub fn feed_line(&mut self, raw: &str) -> Result<Option<Record<T>>, LogError> {
         self.line = self.line.saturating_add(1);
         let line_no = self.line;
-        let err = |kind| LogError { line: line_no, kind };
+        let err = |kind| LogError {
+            line: line_no,
+            kind,
+        };
         let mut text = raw.strip_suffix('\r').unwrap_or(raw);
         if self.columns.is_none() {
             text = text.strip_prefix('\u{feff}').unwrap_or(text);
@@ -212,7 +223,10 @@ impl<T: Real> LogParser<T> {
         let mut fields = trimmed.split(',');
         let mut values: [Option<T>; 5] = [None; 5];
         for &column in columns.iter() {
-            let field = fields.next().ok_or(err(LogErrorKind::MissingField(column.name())))?.trim();
+            let field = fields
+                .next()
+                .ok_or(err(LogErrorKind::MissingField(column.name())))?
+                .trim();
             let slot = match column {
                 Column::Time => values.get_mut(0),
                 Column::P1 => values.get_mut(1),
@@ -226,8 +240,9 @@ impl<T: Real> LogParser<T> {
                 if field.is_empty() {
                     return Err(err(LogErrorKind::EmptyField(column.name())));
                 }
-                let v: f64 =
-                    field.parse().map_err(|_| err(LogErrorKind::NotANumber(column.name())))?;
+                let v: f64 = field
+                    .parse()
+                    .map_err(|_| err(LogErrorKind::NotANumber(column.name())))?;
                 *slot = Some(T::lit(v));
             }
         }
@@ -261,9 +276,15 @@ impl<T: Real> LogParser<T> {
     /// an error (on line 1, or on the line after the last).
     pub fn finish(&self) -> Result<(), LogError> {
         if self.columns.is_none() {
-            Err(LogError { line: self.line.max(1), kind: LogErrorKind::Empty })
+            Err(LogError {
+                line: self.line.max(1),
+                kind: LogErrorKind::Empty,
+            })
         } else if self.samples == 0 {
-            Err(LogError { line: self.line.saturating_add(1), kind: LogErrorKind::NoSamples })
+            Err(LogError {
+                line: self.line.saturating_add(1),
+                kind: LogErrorKind::NoSamples,
+            })
         } else {
             Ok(())
         }
@@ -281,7 +302,9 @@ fn parse_header(text: &str) -> Result<heapless::Vec<Column, MAX_COLUMNS>, LogErr
         if column != Column::Ignored && columns.contains(&column) {
             return Err(LogErrorKind::DuplicateColumn(column.name()));
         }
-        columns.push(column).map_err(|_| LogErrorKind::TooManyColumns)?;
+        columns
+            .push(column)
+            .map_err(|_| LogErrorKind::TooManyColumns)?;
     }
     for required in [Column::Time, Column::P1, Column::P2, Column::Angle] {
         if !columns.contains(&required) {
@@ -315,7 +338,15 @@ mod tests {
         .unwrap();
         assert_eq!(r.len(), 2);
         assert_eq!(r[1].line, 6);
-        assert_eq!(r[1].frame, Frame { t_s: 0.01, p1_bar: 61.0, p2_bar: 5.1, boom_angle_deg: 45.1 });
+        assert_eq!(
+            r[1].frame,
+            Frame {
+                t_s: 0.01,
+                p1_bar: 61.0,
+                p2_bar: 5.1,
+                boom_angle_deg: 45.1
+            }
+        );
         assert_eq!(r[1].true_load_kg, None);
     }
 
@@ -323,18 +354,57 @@ mod tests {
     fn errors_name_line_and_field() {
         let h = "t_s,p1_bar,p2_bar,boom_angle_deg,true_load_kg\n";
         let e = parse_all(&format!("# c\n{h}0,1,2,3,4\n0.1,abc,2,3,4\n")).unwrap_err();
-        assert_eq!(e, LogError { line: 4, kind: LogErrorKind::NotANumber(P1_BAR) });
+        assert_eq!(
+            e,
+            LogError {
+                line: 4,
+                kind: LogErrorKind::NotANumber(P1_BAR)
+            }
+        );
         assert_eq!(e.to_string(), "line 4: field `p1_bar` is not a number");
         let e = parse_all(&format!("{h}0,1,2,3,4\n0.1,1,2\n")).unwrap_err();
-        assert_eq!(e, LogError { line: 3, kind: LogErrorKind::MissingField(BOOM_ANGLE_DEG) });
+        assert_eq!(
+            e,
+            LogError {
+                line: 3,
+                kind: LogErrorKind::MissingField(BOOM_ANGLE_DEG)
+            }
+        );
         let e = parse_all(&format!("{h}1,1,2,3,4\n0.5,1,2,3,4\n")).unwrap_err();
-        assert_eq!(e, LogError { line: 3, kind: LogErrorKind::TimeBackwards });
+        assert_eq!(
+            e,
+            LogError {
+                line: 3,
+                kind: LogErrorKind::TimeBackwards
+            }
+        );
         let e = parse_all("t_s,p1_bar,boom_angle_deg\n0,1,2\n").unwrap_err();
-        assert_eq!(e, LogError { line: 1, kind: LogErrorKind::MissingColumn(P2_BAR) });
-        assert_eq!(parse_all("").unwrap_err(), LogError { line: 1, kind: LogErrorKind::Empty });
+        assert_eq!(
+            e,
+            LogError {
+                line: 1,
+                kind: LogErrorKind::MissingColumn(P2_BAR)
+            }
+        );
+        assert_eq!(
+            parse_all("").unwrap_err(),
+            LogError {
+                line: 1,
+                kind: LogErrorKind::Empty
+            }
+        );
         assert_eq!(parse_all("# only\n").unwrap_err().kind, LogErrorKind::Empty);
-        assert_eq!(parse_all(h).unwrap_err(), LogError { line: 2, kind: LogErrorKind::NoSamples });
-        assert_eq!(parse_all("0,1,2,3\n").unwrap_err().kind, LogErrorKind::NoHeader);
+        assert_eq!(
+            parse_all(h).unwrap_err(),
+            LogError {
+                line: 2,
+                kind: LogErrorKind::NoSamples
+            }
+        );
+        assert_eq!(
+            parse_all("0,1,2,3\n").unwrap_err().kind,
+            LogErrorKind::NoHeader
+        );
         let e = parse_all(&format!("{h}0,1,2,3,4,5\n")).unwrap_err();
         assert_eq!(e.kind, LogErrorKind::TooManyFields);
         let e = parse_all(&format!("{h}0,,2,3,4\n")).unwrap_err();
@@ -346,6 +416,9 @@ mod tests {
         let h = "t_s,p1_bar,p2_bar,boom_angle_deg\n";
         let r = parse_all(&format!("{h}0,NaN,2,3\n")).unwrap();
         assert!(r[0].frame.p1_bar.is_nan());
-        assert_eq!(parse_all(&format!("{h}NaN,1,2,3\n")).unwrap_err().kind, LogErrorKind::TimeNotFinite);
+        assert_eq!(
+            parse_all(&format!("{h}NaN,1,2,3\n")).unwrap_err().kind,
+            LogErrorKind::TimeNotFinite
+        );
     }
 }

@@ -128,7 +128,12 @@ impl<T: Real, M: HookLoadModel<T>> Replay<T, M> {
 }
 
 /// Writes `x` with `decimals` decimals, or `absent` if unknown or not finite.
-fn number<W: Write, T: Real>(w: &mut W, x: Option<T>, decimals: usize, absent: &str) -> fmt::Result {
+fn number<W: Write, T: Real>(
+    w: &mut W,
+    x: Option<T>,
+    decimals: usize,
+    absent: &str,
+) -> fmt::Result {
     match x.map(Real::to_f64) {
         Some(v) if v.is_finite() => write!(w, "{v:.decimals$}"),
         _ => w.write_str(absent),
@@ -191,7 +196,11 @@ pub fn write_event_line<W: Write, T: Real>(w: &mut W, e: &ReplayEvent<T>) -> fmt
 pub fn write_summary_line<W: Write, T: Real>(w: &mut W, s: &ReplaySummary<T>) -> fmt::Result {
     write!(w, "samples={} max_utilization=", s.samples)?;
     number(w, s.max_utilization, 4, "-")?;
-    writeln!(w, " final_state={}", s.final_state.map_or("-", LimiterState::as_str))
+    writeln!(
+        w,
+        " final_state={}",
+        s.final_state.map_or("-", LimiterState::as_str)
+    )
 }
 
 /// Writes the JSON summary (one object, trailing newline). `error` is the

@@ -116,7 +116,10 @@ mod tests {
     use super::*;
 
     fn at(deg: f64) -> BoomState<f64> {
-        BoomState { angle_rad: deg.to_radians(), rate_rad_s: 0.0 }
+        BoomState {
+            angle_rad: deg.to_radians(),
+            rate_rad_s: 0.0,
+        }
     }
 
     #[test]

@@ -55,7 +55,10 @@ impl LimiterState {
     pub fn command(self) -> OutputCommand {
         match self {
             LimiterState::Normal => OutputCommand::default(),
-            LimiterState::Warning => OutputCommand { warning_lamp: true, ..OutputCommand::default() },
+            LimiterState::Warning => OutputCommand {
+                warning_lamp: true,
+                ..OutputCommand::default()
+            },
             LimiterState::Overload | LimiterState::Fault => OutputCommand::FAIL_SAFE,
         }
     }
@@ -131,7 +134,10 @@ struct Latch<T> {
 
 impl<T: Real> Latch<T> {
     const fn new(active: bool) -> Self {
-        Self { active, held_s: None }
+        Self {
+            active,
+            held_s: None,
+        }
     }
 
     /// Advances by one cycle `dt_s` long in which the condition to switch
@@ -215,21 +221,29 @@ impl<T: Real> StateMachine<T> {
                 } else {
                     u >= th.overload_enter
                 };
-                self.overload.update(o_switch, dt_s, if self.overload.active {
-                    th.overload_exit_s
-                } else {
-                    th.enter_debounce_s
-                });
+                self.overload.update(
+                    o_switch,
+                    dt_s,
+                    if self.overload.active {
+                        th.overload_exit_s
+                    } else {
+                        th.enter_debounce_s
+                    },
+                );
                 let w_switch = if self.warning.active {
                     u < th.warning_exit
                 } else {
                     u >= th.warning_enter
                 };
-                self.warning.update(w_switch, dt_s, if self.warning.active {
-                    th.warning_exit_s
-                } else {
-                    th.enter_debounce_s
-                });
+                self.warning.update(
+                    w_switch,
+                    dt_s,
+                    if self.warning.active {
+                        th.warning_exit_s
+                    } else {
+                        th.enter_debounce_s
+                    },
+                );
                 if self.overload.active {
                     self.warning = Latch::new(true);
                 }
@@ -257,7 +271,7 @@ mod tests {
         assert_eq!(run(&mut sm, 0.5, 10), LimiterState::Normal);
         assert_eq!(run(&mut sm, 1.01, 5), LimiterState::Normal); // 40 ms held
         assert_eq!(run(&mut sm, 1.01, 1), LimiterState::Overload); // 50 ms held
-        // 0.96 is below 1.0 but above the 0.95 exit: stays.
+                                                                   // 0.96 is below 1.0 but above the 0.95 exit: stays.
         assert_eq!(run(&mut sm, 0.96, 500), LimiterState::Overload);
         assert_eq!(run(&mut sm, 0.94, 50), LimiterState::Overload); // 0.49 s
         assert_eq!(run(&mut sm, 0.94, 1), LimiterState::Warning); // 0.50 s

@@ -121,7 +121,10 @@ mod tests {
         assert!(BoomAngle::new(-5.0_f64).is_ok());
         assert_eq!(BoomAngle::new(-5.01_f64), Err(FaultKind::OutOfRange));
         assert_eq!(BoomAngle::new(95.01_f32), Err(FaultKind::OutOfRange));
-        assert!((BoomAngle::new(90.0_f64).unwrap().radians() - core::f64::consts::FRAC_PI_2).abs() < 1e-12);
+        assert!(
+            (BoomAngle::new(90.0_f64).unwrap().radians() - core::f64::consts::FRAC_PI_2).abs()
+                < 1e-12
+        );
     }
 
     #[test]

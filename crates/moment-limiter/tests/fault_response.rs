@@ -28,7 +28,11 @@ impl Rig {
         let m = common::Manoeuvre::new(3000.0, 50.0, 50.0, 1.0);
         let (p1, p2) = m.pressures_at(&model, 0.0);
         let limiter = Limiter::new(model, LimiterConfig::standard()).unwrap();
-        Self { limiter, sensors: FaultInjector::new(SimSensors::new(p1, p2, 50.0), 3), cycle: 0 }
+        Self {
+            limiter,
+            sensors: FaultInjector::new(SimSensors::new(p1, p2, 50.0), 3),
+            cycle: 0,
+        }
     }
     fn step(&mut self) -> StepReport<f64> {
         let t = f64::from(self.cycle) * DT;
@@ -47,7 +51,11 @@ impl Rig {
 /// Injects `fault` on `channel` after 2 s of normal running; returns the
 /// number of cycles until FAULT (0 = the very cycle it was injected) and the
 /// report of that cycle.
-fn cycles_to_fault(rig: &mut Rig, channel: Channel, fault: InjectedFault) -> (u32, StepReport<f64>) {
+fn cycles_to_fault(
+    rig: &mut Rig,
+    channel: Channel,
+    fault: InjectedFault,
+) -> (u32, StepReport<f64>) {
     let r = rig.run(200);
     assert_eq!(r.state, LimiterState::Normal, "{r:?}");
     rig.sensors.set_fault(channel, Some(fault));
@@ -66,7 +74,11 @@ fn assert_recovery(rig: &mut Rig, channel: Channel) {
     rig.sensors.set_fault(channel, None);
     for n in 0..100 {
         let r = rig.step();
-        assert_eq!(r.state, LimiterState::Fault, "left FAULT after only {n} clean cycles");
+        assert_eq!(
+            r.state,
+            LimiterState::Fault,
+            "left FAULT after only {n} clean cycles"
+        );
         assert_eq!(r.command, OutputCommand::FAIL_SAFE);
     }
     let r = rig.run(2);
@@ -80,7 +92,13 @@ fn assert_instant(channel: Channel, fault: InjectedFault, kind: FaultKind) {
     assert_eq!(n, 0, "{fault:?}: FAULT only after {n} cycles");
     assert_eq!(r.command, OutputCommand::FAIL_SAFE);
     assert!(r.command.cut_boom_down && r.command.cut_hoist_up);
-    assert_eq!(r.fault, Some(Fault::Sensor(moment_limiter::checks::SensorFault { channel, kind })));
+    assert_eq!(
+        r.fault,
+        Some(Fault::Sensor(moment_limiter::checks::SensorFault {
+            channel,
+            kind
+        }))
+    );
     // A persistent fault keeps the limiter in FAULT.
     if !matches!(fault, InjectedFault::Spike { .. }) {
         assert_eq!(rig.run(300).state, LimiterState::Fault);
@@ -90,30 +108,66 @@ fn assert_instant(channel: Channel, fault: InjectedFault, kind: FaultKind) {
 
 #[test]
 fn open_circuit_on_each_channel() {
-    assert_instant(Channel::PistonSidePressure, InjectedFault::OpenCircuit, FaultKind::OpenCircuit);
-    assert_instant(Channel::RodSidePressure, InjectedFault::OpenCircuit, FaultKind::OpenCircuit);
+    assert_instant(
+        Channel::PistonSidePressure,
+        InjectedFault::OpenCircuit,
+        FaultKind::OpenCircuit,
+    );
+    assert_instant(
+        Channel::RodSidePressure,
+        InjectedFault::OpenCircuit,
+        FaultKind::OpenCircuit,
+    );
     // The pendulum has no loop current: a broken wiper reads 0 counts = −11.3°.
-    assert_instant(Channel::BoomAngle, InjectedFault::OpenCircuit, FaultKind::OutOfRange);
+    assert_instant(
+        Channel::BoomAngle,
+        InjectedFault::OpenCircuit,
+        FaultKind::OutOfRange,
+    );
 }
 
 #[test]
 fn short_circuit_on_each_channel() {
-    assert_instant(Channel::PistonSidePressure, InjectedFault::ShortCircuit, FaultKind::ShortCircuit);
-    assert_instant(Channel::RodSidePressure, InjectedFault::ShortCircuit, FaultKind::ShortCircuit);
-    assert_instant(Channel::BoomAngle, InjectedFault::ShortCircuit, FaultKind::OutOfRange);
+    assert_instant(
+        Channel::PistonSidePressure,
+        InjectedFault::ShortCircuit,
+        FaultKind::ShortCircuit,
+    );
+    assert_instant(
+        Channel::RodSidePressure,
+        InjectedFault::ShortCircuit,
+        FaultKind::ShortCircuit,
+    );
+    assert_instant(
+        Channel::BoomAngle,
+        InjectedFault::ShortCircuit,
+        FaultKind::OutOfRange,
+    );
 }
 
 #[test]
 fn spike_is_caught_in_its_cycle() {
     // +300 ‰ of full scale = 1229 counts = 82 bar in one 10 ms cycle.
-    assert_instant(Channel::PistonSidePressure, InjectedFault::Spike { per_mille: 300 }, FaultKind::RateOfChange);
+    assert_instant(
+        Channel::PistonSidePressure,
+        InjectedFault::Spike { per_mille: 300 },
+        FaultKind::RateOfChange,
+    );
     // +100 ‰ on the angle = 8.8° in 10 ms.
-    assert_instant(Channel::BoomAngle, InjectedFault::Spike { per_mille: -100 }, FaultKind::RateOfChange);
+    assert_instant(
+        Channel::BoomAngle,
+        InjectedFault::Spike { per_mille: -100 },
+        FaultKind::RateOfChange,
+    );
 }
 
 #[test]
 fn nan_bad_frame_on_the_counts_path() {
-    assert_instant(Channel::RodSidePressure, InjectedFault::Nan, FaultKind::Input(InputError::BadFrame));
+    assert_instant(
+        Channel::RodSidePressure,
+        InjectedFault::Nan,
+        FaultKind::Input(InputError::BadFrame),
+    );
 }
 
 #[test]
@@ -149,14 +203,28 @@ fn open_circuit_in_a_recorded_frame_is_out_of_range() {
     let model = RigidCrane::coles_930();
     let mut limiter = Limiter::new(model, LimiterConfig::standard()).unwrap();
     let mut inj = FrameFaultInjector::new(limiter.config().conversion, 9);
-    inj.set_fault(Channel::PistonSidePressure, Some(InjectedFault::OpenCircuit));
-    let f: Frame<f64> = inj.apply(Frame { t_s: 0.0, p1_bar: 60.0, p2_bar: 5.0, boom_angle_deg: 50.0 });
-    assert!((f.p1_bar + 50.0).abs() < 0.1, "0 mA reads -50 bar, got {}", f.p1_bar);
+    inj.set_fault(
+        Channel::PistonSidePressure,
+        Some(InjectedFault::OpenCircuit),
+    );
+    let f: Frame<f64> = inj.apply(Frame {
+        t_s: 0.0,
+        p1_bar: 60.0,
+        p2_bar: 5.0,
+        boom_angle_deg: 50.0,
+    });
+    assert!(
+        (f.p1_bar + 50.0).abs() < 0.1,
+        "0 mA reads -50 bar, got {}",
+        f.p1_bar
+    );
     let r = limiter.step_frame(&f);
     assert_eq!(r.state, LimiterState::Fault);
     // The first cycle is the self-test: it failed and says why.
     let first = limiter.events().iter().next().unwrap();
-    assert!(matches!(first.kind, EventKind::SelfTestFailed(Fault::Sensor(s)) if s.kind == FaultKind::OutOfRange));
+    assert!(
+        matches!(first.kind, EventKind::SelfTestFailed(Fault::Sensor(s)) if s.kind == FaultKind::OutOfRange)
+    );
 }
 
 #[test]
@@ -165,9 +233,14 @@ fn stuck_is_caught_after_the_documented_time() {
         let mut rig = Rig::new();
         let (n, r) = cycles_to_fault(&mut rig, channel, InjectedFault::Stuck);
         // stuck_time_s = 2.0 s = 200 cycles; one period of slack for sampling.
-        assert!((190..=201).contains(&n), "{channel:?}: stuck detected after {n} cycles");
+        assert!(
+            (190..=201).contains(&n),
+            "{channel:?}: stuck detected after {n} cycles"
+        );
         assert_eq!(r.command, OutputCommand::FAIL_SAFE);
-        assert!(matches!(r.fault, Some(Fault::Sensor(s)) if s.kind == FaultKind::Stuck && s.channel == channel));
+        assert!(
+            matches!(r.fault, Some(Fault::Sensor(s)) if s.kind == FaultKind::Stuck && s.channel == channel)
+        );
         // Still stuck: stays in FAULT, no cycling through recovery.
         for _ in 0..300 {
             assert_eq!(rig.step().state, LimiterState::Fault);
@@ -179,10 +252,20 @@ fn stuck_is_caught_after_the_documented_time() {
 #[test]
 fn self_test_passes_and_is_logged() {
     let mut rig = Rig::new();
-    assert_eq!(rig.limiter.state(), LimiterState::Fault, "FAULT before the first cycle");
+    assert_eq!(
+        rig.limiter.state(),
+        LimiterState::Fault,
+        "FAULT before the first cycle"
+    );
     assert_eq!(rig.step().state, LimiterState::Normal);
     let kinds: Vec<EventKind> = rig.limiter.events().iter().map(|e| e.kind).collect();
-    assert_eq!(kinds, vec![EventKind::SelfTestPassed, EventKind::Entered(LimiterState::Normal, None)]);
+    assert_eq!(
+        kinds,
+        vec![
+            EventKind::SelfTestPassed,
+            EventKind::Entered(LimiterState::Normal, None)
+        ]
+    );
 }
 
 struct FailingOutputs;
@@ -199,10 +282,16 @@ fn output_failure_and_clock_fault_cut() {
     let mut out = FailingOutputs;
     rig.limiter.cycle(0.2, &mut rig.sensors, &mut out);
     let r = rig.limiter.step_counts(0.21, &mut rig.sensors);
-    assert_eq!((r.state, r.fault), (LimiterState::Fault, Some(Fault::Output)));
+    assert_eq!(
+        (r.state, r.fault),
+        (LimiterState::Fault, Some(Fault::Output))
+    );
 
     let mut rig = Rig::new();
     rig.run(10);
     let r = rig.limiter.step_counts(0.0, &mut rig.sensors);
-    assert_eq!((r.state, r.fault), (LimiterState::Fault, Some(Fault::Clock)));
+    assert_eq!(
+        (r.state, r.fault),
+        (LimiterState::Fault, Some(Fault::Clock))
+    );
 }

@@ -22,7 +22,13 @@ fn safe_lift_never_warns() {
     let mut l = limiter(Calibration::none());
     for f in m.frames() {
         let r = l.step_frame(&f);
-        assert_eq!(r.state, LimiterState::Normal, "t={} {:?}", f.t_s, r.estimate);
+        assert_eq!(
+            r.state,
+            LimiterState::Normal,
+            "t={} {:?}",
+            f.t_s,
+            r.estimate
+        );
     }
 }
 
@@ -44,11 +50,19 @@ fn overload_while_lowering_is_caught_within_0_2_s() {
                 t_overload = Some(f.t_s);
             }
             if m.true_utilization(f.t_s) < 0.95 {
-                assert_ne!(r.state, LimiterState::Overload, "false overload at t={}", f.t_s);
+                assert_ne!(
+                    r.state,
+                    LimiterState::Overload,
+                    "false overload at t={}",
+                    f.t_s
+                );
             }
         }
         let delay = t_overload.expect("no OVERLOAD") - t_cross;
-        assert!((-0.05..=0.2).contains(&delay), "{move_s} s move: delay {delay} s");
+        assert!(
+            (-0.05..=0.2).contains(&delay),
+            "{move_s} s move: delay {delay} s"
+        );
     }
 }
 
@@ -64,7 +78,10 @@ fn calibration_removes_friction_per_direction() {
     };
     // Learn from unloaded up and down runs.
     let mut learner = CalibrationLearner::new();
-    for m in [with_friction(0.0, 40.0, 80.0, 1), with_friction(0.0, 80.0, 40.0, 2)] {
+    for m in [
+        with_friction(0.0, 40.0, 80.0, 1),
+        with_friction(0.0, 80.0, 40.0, 2),
+    ] {
         let mut l = limiter(Calibration::none());
         for f in m.frames() {
             if let Some(meas) = l.step_frame(&f).measurement {
@@ -78,7 +95,10 @@ fn calibration_removes_friction_per_direction() {
     assert!((r_down + fd).abs() < 0.05 * fd, "r_down {r_down}");
     // With it, a loaded lift and lowering are estimated within a few percent
     // while moving at speed; without it, the friction shows.
-    for m in [with_friction(4000.0, 40.0, 80.0, 3), with_friction(4000.0, 80.0, 40.0, 4)] {
+    for m in [
+        with_friction(4000.0, 40.0, 80.0, 3),
+        with_friction(4000.0, 80.0, 40.0, 4),
+    ] {
         let (mut cal_l, mut raw_l) = (limiter(cal), limiter(Calibration::none()));
         let (mut worst_cal, mut worst_raw) = (0.0f64, 0.0f64);
         for f in m.frames() {
@@ -90,7 +110,10 @@ fn calibration_removes_friction_per_direction() {
             }
         }
         assert!(worst_cal < 0.03, "calibrated error {worst_cal}");
-        assert!(worst_raw > 0.05, "friction should show without calibration: {worst_raw}");
+        assert!(
+            worst_raw > 0.05,
+            "friction should show without calibration: {worst_raw}"
+        );
     }
 }
 
@@ -98,7 +121,11 @@ fn calibration_removes_friction_per_direction() {
 fn f32_and_f64_agree_on_a_short_replay() {
     let m = Manoeuvre::new(8000.0, 75.0, 40.0, 10.0);
     let mut l64 = limiter(Calibration::none());
-    let mut l32 = Limiter::new(RigidCrane::<f32>::coles_930(), LimiterConfig::<f32>::standard()).unwrap();
+    let mut l32 = Limiter::new(
+        RigidCrane::<f32>::coles_930(),
+        LimiterConfig::<f32>::standard(),
+    )
+    .unwrap();
     let mut state_mismatches = 0;
     for f in m.frames() {
         let f32_frame = moment_limiter::limiter::Frame {
@@ -108,12 +135,18 @@ fn f32_and_f64_agree_on_a_short_replay() {
             boom_angle_deg: f.boom_angle_deg as f32,
         };
         let (a, b) = (l64.step_frame(&f), l32.step_frame(&f32_frame));
-        let (ua, ub) = (a.estimate.unwrap().utilization, f64::from(b.estimate.unwrap().utilization));
+        let (ua, ub) = (
+            a.estimate.unwrap().utilization,
+            f64::from(b.estimate.unwrap().utilization),
+        );
         assert!((ua - ub).abs() < 1e-3, "t={} u64={ua} u32={ub}", f.t_s);
         if a.state != b.state {
             state_mismatches += 1;
         }
     }
     // A transition may land one cycle apart when u sits on a threshold.
-    assert!(state_mismatches <= 2, "{state_mismatches} samples with different states");
+    assert!(
+        state_mismatches <= 2,
+        "{state_mismatches} samples with different states"
+    );
 }

@@ -55,7 +55,9 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
                 Ok(None) => break,
                 Err(kind) => anyhow::bail!("{name}: {}", parser.reject_next_line(kind)),
             };
-            let Some(record) = parser.feed_line(&line).map_err(|e| anyhow::anyhow!("{name}: {e}"))?
+            let Some(record) = parser
+                .feed_line(&line)
+                .map_err(|e| anyhow::anyhow!("{name}: {e}"))?
             else {
                 continue;
             };
@@ -74,12 +76,16 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
                 _ => faulted += 1,
             }
         }
-        parser.finish().map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
+        parser
+            .finish()
+            .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
         if faulted > 0 {
             eprintln!("warning: {name}: {faulted} samples with a sensor or model fault left out");
         }
     }
-    let cal = learner.finish(args.min_samples).map_err(|e| anyhow::anyhow!("{e}"))?;
+    let cal = learner
+        .finish(args.min_samples)
+        .map_err(|e| anyhow::anyhow!("{e}"))?;
     let (samples_up, samples_down) = learner.counts();
     let (r_up, r_down) = learner.mean_residuals_n().unwrap_or((f64::NAN, f64::NAN));
     let file = CalibrationFile {

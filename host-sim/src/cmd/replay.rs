@@ -130,7 +130,9 @@ pub fn read_line<R: BufRead>(
             if buf.last() == Some(&b'\n') {
                 buf.pop();
             }
-            String::from_utf8(std::mem::take(buf)).map(Some).map_err(|_| LogErrorKind::NotUtf8)
+            String::from_utf8(std::mem::take(buf))
+                .map(Some)
+                .map_err(|_| LogErrorKind::NotUtf8)
         }
         Err(_) => Err(LogErrorKind::Unreadable),
     }
@@ -138,8 +140,8 @@ pub fn read_line<R: BufRead>(
 
 /// Runs the subcommand; returns the exit code.
 pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
-    let file = File::open(&args.log)
-        .with_context(|| format!("cannot open log {}", args.log.display()))?;
+    let file =
+        File::open(&args.log).with_context(|| format!("cannot open log {}", args.log.display()))?;
     let mut config = LimiterConfig::standard();
     if let Some(path) = &args.calibration {
         config.calibration = load_calibration(path)?;

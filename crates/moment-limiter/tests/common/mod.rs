@@ -49,7 +49,11 @@ impl Manoeuvre {
         let x = ((t - self.hold_s) / self.move_s).clamp(0.0, 1.0);
         let two_pi = 2.0 * core::f64::consts::PI;
         let s = x - (two_pi * x).sin() / two_pi;
-        let ds = if (0.0..1.0).contains(&x) { (1.0 - (two_pi * x).cos()) / self.move_s } else { 0.0 };
+        let ds = if (0.0..1.0).contains(&x) {
+            (1.0 - (two_pi * x).cos()) / self.move_s
+        } else {
+            0.0
+        };
         let span = self.to_deg - self.from_deg;
         (self.from_deg + span * s, span * ds)
     }
@@ -61,8 +65,14 @@ impl Manoeuvre {
     /// Noise-free pressures (p1, p2) in bar at time t.
     pub fn pressures_at(&self, model: &RigidCrane<f64>, t: f64) -> (f64, f64) {
         let (deg, rate) = self.angle_at(t);
-        let boom = BoomState { angle_rad: deg.to_radians(), rate_rad_s: rate.to_radians() };
-        let f = model.piston_force_n(boom).expect("stand-in model").at(self.load_kg);
+        let boom = BoomState {
+            angle_rad: deg.to_radians(),
+            rate_rad_s: rate.to_radians(),
+        };
+        let f = model
+            .piston_force_n(boom)
+            .expect("stand-in model")
+            .at(self.load_kg);
         let (f, p2) = if rate > 1e-6 {
             (f + self.friction_up_n, 5.0)
         } else if rate < -1e-6 {
@@ -99,9 +109,16 @@ impl Manoeuvre {
         let model = RigidCrane::coles_930();
         let (deg, _) = self.angle_at(t);
         let j = model
-            .jack_reaction_n(BoomState { angle_rad: deg.to_radians(), rate_rad_s: 0.0 })
+            .jack_reaction_n(BoomState {
+                angle_rad: deg.to_radians(),
+                rate_rad_s: 0.0,
+            })
             .expect("stand-in model");
-        let rated = if j.per_kg < 0.0 { (-j.at_zero / j.per_kg / 1.5).min(10_000.0) } else { 10_000.0 };
+        let rated = if j.per_kg < 0.0 {
+            (-j.at_zero / j.per_kg / 1.5).min(10_000.0)
+        } else {
+            10_000.0
+        };
         self.load_kg / rated
     }
 }
@@ -118,7 +135,13 @@ pub struct SimSensors {
 
 impl SimSensors {
     pub fn new(p1_bar: f64, p2_bar: f64, angle_deg: f64) -> Self {
-        Self { conversion: SensorConversion::standard(), p1_bar, p2_bar, angle_deg, tick: 0 }
+        Self {
+            conversion: SensorConversion::standard(),
+            p1_bar,
+            p2_bar,
+            angle_deg,
+            tick: 0,
+        }
     }
 }
 
