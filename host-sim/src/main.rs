@@ -12,7 +12,11 @@ mod model;
 mod plot;
 
 #[derive(Parser)]
-#[command(name = "crane-sim", version, about = "Load moment limiter simulator for the COLES Mobile 930 (Kılıçaslan 1997)")]
+#[command(
+    name = "crane-sim",
+    version,
+    about = "Load moment limiter simulator for the COLES Mobile 930 (Kılıçaslan 1997)"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,

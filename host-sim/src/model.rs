@@ -6,6 +6,10 @@ use crane_model::CraneData;
 
 /// The COLES Mobile 930 with the thesis's 12 elements and 4 modes.
 pub fn thesis_model() -> anyhow::Result<ThesisModel<f64>> {
-    ThesisModel::<f64>::build(&CraneData::coles_mobile_930(), MeshRefinement::THESIS, &THESIS_BASIS)
-        .map_err(|e| anyhow::anyhow!("building the crane model failed: {e}"))
+    ThesisModel::<f64>::build(
+        &CraneData::coles_mobile_930(),
+        MeshRefinement::THESIS,
+        &THESIS_BASIS,
+    )
+    .map_err(|e| anyhow::anyhow!("building the crane model failed: {e}"))
 }

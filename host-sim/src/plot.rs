@@ -41,7 +41,13 @@ fn bounds(panel: &Panel) -> (f64, f64, f64, f64) {
     if x0 > x1 {
         return (0.0, 1.0, 0.0, 1.0);
     }
-    let pad = |a: f64, b: f64| if (b - a).abs() < 1e-12 { (a - 1.0, b + 1.0) } else { (a - 0.05 * (b - a), b + 0.05 * (b - a)) };
+    let pad = |a: f64, b: f64| {
+        if (b - a).abs() < 1e-12 {
+            (a - 1.0, b + 1.0)
+        } else {
+            (a - 0.05 * (b - a), b + 0.05 * (b - a))
+        }
+    };
     let (x0, x1) = pad(x0, x1);
     let (y0, y1) = pad(y0, y1);
     (x0, x1, y0, y1)
@@ -53,7 +59,14 @@ pub fn write_svg(path: &Path, panels: &[Panel]) -> Result<()> {
     let root = SVGBackend::new(path, (900, height)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| anyhow!("plot: {e}"))?;
     let areas = root.split_evenly((panels.len(), 1));
-    let colors = [BLUE, RED, RGBColor(0, 150, 0), BLACK, MAGENTA, RGBColor(230, 140, 0)];
+    let colors = [
+        BLUE,
+        RED,
+        RGBColor(0, 150, 0),
+        BLACK,
+        MAGENTA,
+        RGBColor(230, 140, 0),
+    ];
     for (panel, area) in panels.iter().zip(areas.iter()) {
         let (x0, x1, y0, y1) = bounds(panel);
         let mut chart = ChartBuilder::on(area)
@@ -73,16 +86,25 @@ pub fn write_svg(path: &Path, panels: &[Panel]) -> Result<()> {
             let color = colors[i % colors.len()];
             if s.markers {
                 chart
-                    .draw_series(s.points.iter().map(|&(x, y)| Circle::new((x, y), 4, color.filled())))
+                    .draw_series(
+                        s.points
+                            .iter()
+                            .map(|&(x, y)| Circle::new((x, y), 4, color.filled())),
+                    )
                     .map_err(|e| anyhow!("plot: {e}"))?
                     .label(s.label)
                     .legend(move |(x, y)| Circle::new((x, y), 4, color.filled()));
             } else {
                 chart
-                    .draw_series(LineSeries::new(s.points.iter().copied(), color.stroke_width(2)))
+                    .draw_series(LineSeries::new(
+                        s.points.iter().copied(),
+                        color.stroke_width(2),
+                    ))
                     .map_err(|e| anyhow!("plot: {e}"))?
                     .label(s.label)
-                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2)));
+                    .legend(move |(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
+                    });
             }
         }
         chart

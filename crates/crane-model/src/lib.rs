@@ -8,6 +8,7 @@
 #![cfg_attr(not(any(test, feature = "std")), no_std)]
 #![forbid(unsafe_code)]
 
+pub mod bodies;
 pub mod crane;
 pub mod dense;
 pub mod dynamics;
@@ -16,15 +17,15 @@ pub mod error;
 pub mod fe;
 pub mod integrator;
 pub mod load_model;
-pub mod multibody;
-pub mod bodies;
 pub mod mechanism;
 pub mod modal;
+pub mod multibody;
 pub mod profile;
 pub mod real;
 pub mod section;
 pub mod simulation;
 pub mod statics;
+pub mod tipping;
 
 pub use crane::CraneData;
 pub use error::ModelError;

@@ -37,7 +37,11 @@ struct ModesReport {
 }
 
 fn row(kind: &'static str, omega: f64) -> ModeRow {
-    ModeRow { kind, omega_rad_s: omega, frequency_hz: omega / (2.0 * std::f64::consts::PI) }
+    ModeRow {
+        kind,
+        omega_rad_s: omega,
+        frequency_hz: omega / (2.0 * std::f64::consts::PI),
+    }
 }
 
 /// Runs the subcommand; returns the exit code.
@@ -58,7 +62,12 @@ pub fn run(args: ModesArgs) -> anyhow::Result<u8> {
         centre_of_mass_from_a0_m: analysis.centre_of_mass_m(),
         rayleigh_alpha_per_s: modes.rayleigh_alpha,
         rayleigh_beta_s: modes.rayleigh_beta,
-        retained: modes.kinds.iter().zip(modes.omega_rad_s.iter()).map(|(k, &w)| row(k.label(), w)).collect(),
+        retained: modes
+            .kinds
+            .iter()
+            .zip(modes.omega_rad_s.iter())
+            .map(|(k, &w)| row(k.label(), w))
+            .collect(),
         lowest_constrained: (0..analysis.mode_count().min(10))
             .map(|k| row(analysis.kind(k).label(), analysis.frequency_rad_s(k)))
             .collect(),
@@ -67,21 +76,45 @@ pub fn run(args: ModesArgs) -> anyhow::Result<u8> {
         println!("{}", serde_json::to_string_pretty(&report)?);
         return Ok(0);
     }
-    println!("Boom (body 1) of the COLES Mobile 930, {} elements", report.elements);
+    println!(
+        "Boom (body 1) of the COLES Mobile 930, {} elements",
+        report.elements
+    );
     println!("  mass                 {:10.2} kg", report.boom_mass_kg);
-    println!("  centre of mass       {:10.4} m from A0", report.centre_of_mass_from_a0_m);
+    println!(
+        "  centre of mass       {:10.4} m from A0",
+        report.centre_of_mass_from_a0_m
+    );
     println!("  Rayleigh damping     alpha = {:.5} 1/s, beta = {:.4e} s (zeta = 2 % at the two lowest retained modes)", report.rayleigh_alpha_per_s, report.rayleigh_beta_s);
     println!();
     println!("Retained modes (thesis basis)");
-    println!("  {:>2}  {:<14} {:>12} {:>10}", "#", "kind", "omega rad/s", "f Hz");
+    println!(
+        "  {:>2}  {:<14} {:>12} {:>10}",
+        "#", "kind", "omega rad/s", "f Hz"
+    );
     for (i, m) in report.retained.iter().enumerate() {
-        println!("  {:>2}  {:<14} {:>12.3} {:>10.3}", i + 1, m.kind, m.omega_rad_s, m.frequency_hz);
+        println!(
+            "  {:>2}  {:<14} {:>12.3} {:>10.3}",
+            i + 1,
+            m.kind,
+            m.omega_rad_s,
+            m.frequency_hz
+        );
     }
     println!();
     println!("Lowest constrained modes of the boom (A0 pinned, A clamped)");
-    println!("  {:>2}  {:<14} {:>12} {:>10}", "#", "kind", "omega rad/s", "f Hz");
+    println!(
+        "  {:>2}  {:<14} {:>12} {:>10}",
+        "#", "kind", "omega rad/s", "f Hz"
+    );
     for (i, m) in report.lowest_constrained.iter().enumerate() {
-        println!("  {:>2}  {:<14} {:>12.3} {:>10.3}", i + 1, m.kind, m.omega_rad_s, m.frequency_hz);
+        println!(
+            "  {:>2}  {:<14} {:>12.3} {:>10.3}",
+            i + 1,
+            m.kind,
+            m.omega_rad_s,
+            m.frequency_hz
+        );
     }
     Ok(0)
 }

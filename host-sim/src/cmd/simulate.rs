@@ -4,7 +4,9 @@ use crate::model::thesis_model;
 use crate::plot::{write_svg, Panel, Series};
 use anyhow::{bail, Context, Result};
 use crane_model::profile::RampShape;
-use crane_model::simulation::{thesis_cases, Direction, InitialState, Maneuver, Sample, SimulationOptions};
+use crane_model::simulation::{
+    thesis_cases, Direction, InitialState, Maneuver, Sample, SimulationOptions,
+};
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -112,12 +114,22 @@ fn maneuver(args: &SimulateArgs) -> Result<(String, Maneuver)> {
         DirectionArg::Up => Direction::Up,
         DirectionArg::Down => Direction::Down,
     };
-    let m = Maneuver::thesis(args.load_kg, args.duration, shape, direction).map_err(|e| anyhow::anyhow!("{e}"))?;
-    Ok((format!("{} kg, {} s, {:?}, {:?}", args.load_kg, args.duration, shape, direction), m))
+    let m = Maneuver::thesis(args.load_kg, args.duration, shape, direction)
+        .map_err(|e| anyhow::anyhow!("{e}"))?;
+    Ok((
+        format!(
+            "{} kg, {} s, {:?}, {:?}",
+            args.load_kg, args.duration, shape, direction
+        ),
+        m,
+    ))
 }
 
 /// Runs a maneuver and collects its samples.
-pub fn run_maneuver(m: &Maneuver, options: &SimulationOptions) -> Result<(Vec<Sample<f64>>, crane_model::simulation::RunSummary<f64>)> {
+pub fn run_maneuver(
+    m: &Maneuver,
+    options: &SimulationOptions,
+) -> Result<(Vec<Sample<f64>>, crane_model::simulation::RunSummary<f64>)> {
     let model = thesis_model()?;
     let mut samples = Vec::new();
     let summary = model
@@ -131,28 +143,79 @@ pub fn run_maneuver(m: &Maneuver, options: &SimulationOptions) -> Result<(Vec<Sa
 
 /// Draws the thesis's two figures for a run.
 pub fn plot_run(path: &std::path::Path, title: &str, samples: &[Sample<f64>]) -> Result<()> {
-    let force: Vec<(f64, f64)> = samples.iter().map(|s| (s.boom_angle_rad.to_degrees(), s.reactions.piston_force_n / 1e3)).collect();
-    let defl = |i: usize| -> Vec<(f64, f64)> { samples.iter().map(|s| (s.boom_angle_rad.to_degrees(), s.deflection_m[i] * 1e3)).collect() };
+    let force: Vec<(f64, f64)> = samples
+        .iter()
+        .map(|s| {
+            (
+                s.boom_angle_rad.to_degrees(),
+                s.reactions.piston_force_n / 1e3,
+            )
+        })
+        .collect();
+    let defl = |i: usize| -> Vec<(f64, f64)> {
+        samples
+            .iter()
+            .map(|s| (s.boom_angle_rad.to_degrees(), s.deflection_m[i] * 1e3))
+            .collect()
+    };
     let (d3, d8, d13) = (defl(0), defl(1), defl(2));
-    let fa: Vec<(f64, f64)> = samples.iter().map(|s| (s.boom_angle_rad.to_degrees(), s.reactions.jack_reaction_n / 1e3)).collect();
+    let fa: Vec<(f64, f64)> = samples
+        .iter()
+        .map(|s| {
+            (
+                s.boom_angle_rad.to_degrees(),
+                s.reactions.jack_reaction_n / 1e3,
+            )
+        })
+        .collect();
     let t1 = format!("Piston force vs boom angle — {title}");
     let t2 = format!("Transverse deflection of nodes 3, 8, 13 — {title}");
     let t3 = format!("Rear-jack reaction F_A (eq. 4.2) — {title}");
     write_svg(
         path,
         &[
-            Panel { title: &t1, x_label: "boom angle (deg)", y_label: "piston force (kN)", series: vec![Series { label: "simulated", points: &force, markers: false }] },
+            Panel {
+                title: &t1,
+                x_label: "boom angle (deg)",
+                y_label: "piston force (kN)",
+                series: vec![Series {
+                    label: "simulated",
+                    points: &force,
+                    markers: false,
+                }],
+            },
             Panel {
                 title: &t2,
                 x_label: "boom angle (deg)",
                 y_label: "deflection (mm)",
                 series: vec![
-                    Series { label: "node 3", points: &d3, markers: false },
-                    Series { label: "node 8", points: &d8, markers: false },
-                    Series { label: "node 13 (tip)", points: &d13, markers: false },
+                    Series {
+                        label: "node 3",
+                        points: &d3,
+                        markers: false,
+                    },
+                    Series {
+                        label: "node 8",
+                        points: &d8,
+                        markers: false,
+                    },
+                    Series {
+                        label: "node 13 (tip)",
+                        points: &d13,
+                        markers: false,
+                    },
                 ],
             },
-            Panel { title: &t3, x_label: "boom angle (deg)", y_label: "F_A (kN)", series: vec![Series { label: "F_A", points: &fa, markers: false }] },
+            Panel {
+                title: &t3,
+                x_label: "boom angle (deg)",
+                y_label: "F_A (kN)",
+                series: vec![Series {
+                    label: "F_A",
+                    points: &fa,
+                    markers: false,
+                }],
+            },
         ],
     )
 }
@@ -180,7 +243,10 @@ pub fn run(args: SimulateArgs) -> Result<u8> {
     let (samples, summary) = run_maneuver(&m, &options)?;
     let elapsed = started.elapsed();
     if let Some(path) = &args.out {
-        let mut f = std::io::BufWriter::new(std::fs::File::create(path).with_context(|| format!("cannot create {}", path.display()))?);
+        let mut f = std::io::BufWriter::new(
+            std::fs::File::create(path)
+                .with_context(|| format!("cannot create {}", path.display()))?,
+        );
         writeln!(f, "{CSV_HEADER}")?;
         for s in &samples {
             writeln!(f, "{}", csv_row(s))?;
@@ -190,16 +256,43 @@ pub fn run(args: SimulateArgs) -> Result<u8> {
     if let Some(path) = &args.plot {
         plot_run(path, &title, &samples)?;
     }
-    let peak = samples.iter().map(|s| s.reactions.piston_force_n).fold(f64::MIN, f64::max);
-    let min_fa = samples.iter().map(|s| s.reactions.jack_reaction_n).fold(f64::MAX, f64::min);
-    let max_tip = samples.iter().map(|s| s.deflection_m[2].abs()).fold(0.0, f64::max);
+    let peak = samples
+        .iter()
+        .map(|s| s.reactions.piston_force_n)
+        .fold(f64::MIN, f64::max);
+    let min_fa = samples
+        .iter()
+        .map(|s| s.reactions.jack_reaction_n)
+        .fold(f64::MAX, f64::min);
+    let max_tip = samples
+        .iter()
+        .map(|s| s.deflection_m[2].abs())
+        .fold(0.0, f64::max);
     let mut out = std::io::stdout().lock();
     let _ = writeln!(out, "maneuver          {title}");
-    let _ = writeln!(out, "integrator        Newmark average acceleration, h = {} ms, {} steps, {} evaluations", args.step_ms, summary.steps, summary.evaluations);
-    let _ = writeln!(out, "wall time         {:.1} ms ({:.0}x faster than real time)", elapsed.as_secs_f64() * 1e3, m.end_s() / elapsed.as_secs_f64());
+    let _ = writeln!(
+        out,
+        "integrator        Newmark average acceleration, h = {} ms, {} steps, {} evaluations",
+        args.step_ms, summary.steps, summary.evaluations
+    );
+    let _ = writeln!(
+        out,
+        "wall time         {:.1} ms ({:.0}x faster than real time)",
+        elapsed.as_secs_f64() * 1e3,
+        m.end_s() / elapsed.as_secs_f64()
+    );
     let _ = writeln!(out, "peak piston force {:.1} kN", peak / 1e3);
     let _ = writeln!(out, "max |tip defl.|   {:.2} mm", max_tip * 1e3);
-    let _ = writeln!(out, "min F_A           {:.1} kN{}", min_fa / 1e3, if min_fa <= 0.0 { "  (TIPS)" } else { "" });
-    let _ = writeln!(out, "max |constraint|  {:.2e}", summary.max_constraint_violation);
+    let _ = writeln!(
+        out,
+        "min F_A           {:.1} kN{}",
+        min_fa / 1e3,
+        if min_fa <= 0.0 { "  (TIPS)" } else { "" }
+    );
+    let _ = writeln!(
+        out,
+        "max |constraint|  {:.2e}",
+        summary.max_constraint_violation
+    );
     Ok(0)
 }

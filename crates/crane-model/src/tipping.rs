@@ -1,0 +1,165 @@
+//! Tipping and lifting capacity (thesis §4.3.2, eqs. 4.2–4.3).
+//!
+//! At a given state (positions, velocities, accelerations of the free coordinates)
+//! the hook load W enters the equations linearly (masses and weight of body 5), so
+//! every Lagrange multiplier, the piston force and the rear-jack reaction F_A are
+//! affine in W: two evaluations give them exactly ([`CraneModel::affine_at`]).
+//!
+//! At rest the boom's static deflection itself grows with W, which makes F_A a
+//! quadratic in W (the load's arm grows with the tip's sag). The quasi-static
+//! tipping load is its root, from three evaluations, in closed form
+//! ([`CraneModel::tipping_load_at_rest`]); no search.
+
+use crate::dynamics::Reactions;
+use crate::load_model::{Affine, BoomState, HookLoadModel};
+use crate::multibody::{CraneModel, FreeCoordinates};
+use crate::profile::RampShape;
+use crate::simulation::{Direction, Maneuver, SimulationOptions};
+use crate::{ModelError, Real};
+use nalgebra::SVector;
+
+/// Default safety factor on the tipping load (thesis §4.3.2).
+pub const SAFETY_FACTOR: f64 = 1.5;
+
+/// The tipping load at a boom angle, at rest.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TippingPoint<T> {
+    /// Boom angle θ1 (rad).
+    pub boom_angle_rad: T,
+    /// Hook radius R (m, eq. 4.3).
+    pub radius_m: T,
+    /// Hook load at which F_A = 0 (kg); infinite if the crane cannot tip here.
+    pub tipping_load_kg: T,
+    /// F_A with no hook load (N).
+    pub jack_reaction_unloaded_n: T,
+}
+
+impl<T: Real, const M: usize> CraneModel<T, M> {
+    /// Reactions at a quasi-static state: boom at angle θ1 turning at `rate`, the
+    /// free coordinates `free` held with zero acceleration, hook load `load_kg`.
+    pub fn quasi_static_reactions(&self, boom: BoomState<T>, load_kg: T, free: &FreeCoordinates<T, M>) -> Result<Reactions<T>, ModelError> {
+        let act = self.actuator_at(boom.angle_rad, boom.rate_rad_s);
+        let mut ev = self.evaluate(act, load_kg, free)?;
+        ev.eta_accel = SVector::zeros();
+        ev.swing_accel = T::zero();
+        let (_, lambda) = self.multipliers(&ev)?;
+        Ok(self.reactions(&lambda))
+    }
+
+    /// Piston force and F_A as affine functions of W at a fixed state (two evaluations).
+    pub fn affine_at(&self, boom: BoomState<T>, free: &FreeCoordinates<T, M>) -> Result<(Affine<T>, Affine<T>), ModelError> {
+        let r0 = self.quasi_static_reactions(boom, T::zero(), free)?;
+        let r1 = self.quasi_static_reactions(boom, T::one(), free)?;
+        Ok((
+            Affine { at_zero: r0.piston_force_n, per_kg: r1.piston_force_n - r0.piston_force_n },
+            Affine { at_zero: r0.jack_reaction_n, per_kg: r1.jack_reaction_n - r0.jack_reaction_n },
+        ))
+    }
+
+    /// Reactions at rest at angle θ1 under load W, with the boom at its static
+    /// deflection for that load (the quasi-static lifting-capacity state).
+    pub fn reactions_at_rest(&self, boom_angle_rad: T, load_kg: T) -> Result<Reactions<T>, ModelError> {
+        let free = self.equilibrium_state(boom_angle_rad, load_kg)?;
+        self.quasi_static_reactions(BoomState { angle_rad: boom_angle_rad, rate_rad_s: T::zero() }, load_kg, &free)
+    }
+
+    /// The hook load that makes F_A = 0 at rest at angle θ1: the root of the exact
+    /// quadratic F_A(W) = a + b·W + c·W², from F_A at W = 0, W1, 2·W1.
+    pub fn tipping_load_at_rest(&self, boom_angle_rad: T) -> Result<TippingPoint<T>, ModelError> {
+        let w1 = T::lit(5000.0);
+        let f0 = self.reactions_at_rest(boom_angle_rad, T::zero())?.jack_reaction_n;
+        let f1 = self.reactions_at_rest(boom_angle_rad, w1)?.jack_reaction_n;
+        let f2 = self.reactions_at_rest(boom_angle_rad, w1 + w1)?.jack_reaction_n;
+        let two = T::lit(2.0);
+        let c = (f2 - two * f1 + f0) / (two * w1 * w1);
+        let b = (f1 - f0) / w1 - c * w1;
+        let a = f0;
+        let radius_m = T::lit(self.crane.boom.length_m()) * boom_angle_rad.cos() - T::lit(self.crane.chassis.radius_offset_m);
+        let tipping_load_kg = smallest_positive_root(a, b, c).unwrap_or_else(|| T::max_value().unwrap_or_else(T::one));
+        Ok(TippingPoint { boom_angle_rad, radius_m, tipping_load_kg, jack_reaction_unloaded_n: f0 })
+    }
+
+    /// The thesis's dynamic tipping search (§4.3.2): lower the boom from 80° with the
+    /// 30 s cycloidal profile's speed, carrying `load_kg`, until F_A ≤ 0. Returns the
+    /// boom angle (rad) at the zero crossing, or `None` if it reaches `lowest_deg`.
+    pub fn dynamic_tipping_angle(&self, load_kg: f64, lowest_deg: f64, options: &SimulationOptions) -> Result<Option<T>, ModelError> {
+        let thesis = Maneuver::thesis(load_kg, 30.0, RampShape::Cycloidal, Direction::Down)?;
+        let v0 = self.stroke(&thesis).v0_m_s().to_f64().abs();
+        let a_hi = self.geometry.extension_at_angle(T::lit(80f64.to_radians())).to_f64();
+        let a_lo = self.geometry.extension_at_angle(T::lit(lowest_deg.to_radians())).to_f64();
+        let ramp = thesis.t1_s;
+        let t3 = (a_hi - a_lo).abs() / v0 + ramp;
+        let maneuver = Maneuver { t1_s: ramp, t2_s: t3 - ramp, t3_s: t3, low_angle_deg: lowest_deg, high_angle_deg: 80.0, settle_s: 0.0, ..thesis };
+        let mut previous: Option<(T, T)> = None;
+        let mut found = None;
+        self.simulate(&maneuver, options, |s| {
+            let (angle, fa) = (s.boom_angle_rad, s.reactions.jack_reaction_n);
+            if fa <= T::zero() {
+                found = Some(match previous {
+                    Some((a0, f0)) if f0 > T::zero() => a0 + (angle - a0) * f0 / (f0 - fa),
+                    _ => angle,
+                });
+                return false;
+            }
+            previous = Some((angle, fa));
+            true
+        })?;
+        Ok(found)
+    }
+}
+
+/// Smallest positive root of a + b·W + c·W² (numerically stable form).
+fn smallest_positive_root<T: Real>(a: T, b: T, c: T) -> Option<T> {
+    let tiny = T::default_epsilon() * (b.abs() + a.abs());
+    if c.abs() * T::lit(1e8) <= b.abs() || c.abs() <= tiny {
+        let r = -a / b;
+        return if r > T::zero() && r.is_finite() { Some(r) } else { None };
+    }
+    let disc = b * b - T::lit(4.0) * a * c;
+    if disc < T::zero() {
+        return None;
+    }
+    let q = -(b + b.signum() * disc.sqrt()) * T::lit(0.5);
+    let (r1, r2) = (q / c, a / q);
+    let mut best: Option<T> = None;
+    for r in [r1, r2] {
+        if r > T::zero() && r.is_finite() && best.is_none_or(|b| r < b) {
+            best = Some(r);
+        }
+    }
+    best
+}
+
+impl<T: Real, const M: usize> HookLoadModel<T> for CraneModel<T, M> {
+    /// Secant through W = 0 and the rated load (W_tip/1.5) of the at-rest piston
+    /// force, with the boom deflected statically for each load: exact at both
+    /// points, within a fraction of a per mille between them.
+    fn piston_force_n(&self, boom: BoomState<T>) -> Result<Affine<T>, ModelError> {
+        let tip = self.tipping_load_at_rest(boom.angle_rad)?;
+        let w_ref = (tip.tipping_load_kg / T::lit(SAFETY_FACTOR)).min(T::lit(20_000.0)).max(T::lit(100.0));
+        let at = |w: T| -> Result<T, ModelError> {
+            let free = self.equilibrium_state(boom.angle_rad, w)?;
+            Ok(self.quasi_static_reactions(boom, w, &free)?.piston_force_n)
+        };
+        let (f0, f1) = (at(T::zero())?, at(w_ref)?);
+        Ok(Affine { at_zero: f0, per_kg: (f1 - f0) / w_ref })
+    }
+
+    /// Secant through W = 0 and the exact tipping load: so −at_zero/per_kg is the
+    /// quasi-static tipping load itself.
+    fn jack_reaction_n(&self, boom: BoomState<T>) -> Result<Affine<T>, ModelError> {
+        let tip = self.tipping_load_at_rest(boom.angle_rad)?;
+        let free = self.equilibrium_state(boom.angle_rad, T::zero())?;
+        let f0 = self.quasi_static_reactions(boom, T::zero(), &free)?.jack_reaction_n;
+        if tip.tipping_load_kg < T::lit(1e9) {
+            Ok(Affine { at_zero: f0, per_kg: -f0 / tip.tipping_load_kg })
+        } else {
+            let (_, fa) = self.affine_at(boom, &free)?;
+            Ok(Affine { at_zero: f0, per_kg: fa.per_kg })
+        }
+    }
+
+    fn radius_m(&self, boom_angle_rad: T) -> T {
+        T::lit(self.crane.boom.length_m()) * boom_angle_rad.cos() - T::lit(self.crane.chassis.radius_offset_m)
+    }
+}
