@@ -19,11 +19,21 @@
 //! the limiter's `SensorInputs`/`Outputs` over embedded-hal 1.0.
 //!
 //! A panic cuts the outputs first (`panic`). No heap anywhere.
-#![no_std]
-#![no_main]
+//!
+//! On a host target (e.g. `cargo check --workspace`) the crate compiles to a stub
+//! `main` that says to build for `thumbv7em-none-eabihf`: the firmware is only
+//! meaningful on the MCU, and this keeps workspace-wide host commands working.
+#![cfg_attr(target_os = "none", no_std)]
+#![cfg_attr(target_os = "none", no_main)]
 // cortex-m-rt's `#[entry]` expands to an `#[export_name]` item, which the
 // unsafe_code lint flags; the attribute is required by the runtime.
 #![allow(unsafe_code)]
+
+#[cfg(not(target_os = "none"))]
+fn main() {
+    eprintln!("the firmware runs on the MCU: build with --target thumbv7em-none-eabihf");
+    std::process::exit(1);
+}
 
 #[cfg(all(feature = "qemu", feature = "board"))]
 compile_error!(
@@ -32,20 +42,28 @@ compile_error!(
 #[cfg(not(any(feature = "qemu", feature = "board")))]
 compile_error!("choose one of the features `qemu` (default) and `board`");
 
+#[cfg(target_os = "none")]
 use cortex_m as _; // critical-section implementation for defmt
+#[cfg(target_os = "none")]
 use cortex_m_rt::entry;
 
+#[cfg(target_os = "none")]
 pub mod model;
+#[cfg(target_os = "none")]
 mod panic;
 
 #[cfg(feature = "board")]
+#[cfg(target_os = "none")]
 mod board;
 #[cfg(feature = "qemu")]
+#[cfg(target_os = "none")]
 mod defmt_semihosting;
 #[cfg(feature = "qemu")]
+#[cfg(target_os = "none")]
 pub mod qemu;
 
 /// Per-build hooks the panic handler needs.
+#[cfg(target_os = "none")]
 mod platform {
     #[cfg(feature = "board")]
     pub use crate::board::{cut_outputs_now, halt_after_panic};
@@ -66,6 +84,7 @@ mod platform {
 }
 
 #[cfg(feature = "qemu")]
+#[cfg(target_os = "none")]
 #[entry]
 fn main() -> ! {
     // `take` only fails if called twice; `main` runs once.
@@ -77,6 +96,7 @@ fn main() -> ! {
 }
 
 #[cfg(feature = "board")]
+#[cfg(target_os = "none")]
 #[entry]
 fn main() -> ! {
     board::run()
