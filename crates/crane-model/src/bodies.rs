@@ -22,7 +22,9 @@ impl<T: Real> RigidMass<T> {
         RigidMass {
             mass_kg: T::lit(mass_kg),
             first_moment_kg_m: T::lit(mass_kg * length_m / 2.0),
-            inertia_kg_m2: T::lit(mass_kg * (length_m * length_m / 3.0 + radius_m * radius_m / 4.0)),
+            inertia_kg_m2: T::lit(
+                mass_kg * (length_m * length_m / 3.0 + radius_m * radius_m / 4.0),
+            ),
         }
     }
 
@@ -69,7 +71,9 @@ impl<T: Real> CylinderMass<T> {
         let tube = RigidMass {
             mass_kg: T::lit(c.tube_mass_kg),
             first_moment_kg_m: T::lit(c.tube_mass_kg * c.length_m / 2.0),
-            inertia_kg_m2: T::lit(c.tube_mass_kg * (c.length_m * c.length_m / 3.0 + (ro * ro + ri * ri) / 4.0)),
+            inertia_kg_m2: T::lit(
+                c.tube_mass_kg * (c.length_m * c.length_m / 3.0 + (ro * ro + ri * ri) / 4.0),
+            ),
         };
         CylinderMass {
             tube,
@@ -91,7 +95,12 @@ impl<T: Real> CylinderMass<T> {
         }
         let quarter = T::lit(0.25);
         let ri2 = self.bore_radius_m * self.bore_radius_m;
-        let piston_side = RigidMass::segment(self.oil_density_kg_m3 * self.bore_area_m2 * a, T::zero(), a, quarter * ri2);
+        let piston_side = RigidMass::segment(
+            self.oil_density_kg_m3 * self.bore_area_m2 * a,
+            T::zero(),
+            a,
+            quarter * ri2,
+        );
         let start = a + self.piston_thickness_m;
         let rr2 = self.rod_radius_m * self.rod_radius_m;
         let annulus = RigidMass::segment(
@@ -128,7 +137,13 @@ pub struct Pendulum<T> {
 
 impl<T: Real> Pendulum<T> {
     /// Rope of `rope_kg_per_m` and hook load `load_kg` hanging `l` metres.
-    pub fn new(rope_kg_per_m: T, load_kg: T, l: T, l_rate: T, l_accel: T) -> Result<Self, ModelError> {
+    pub fn new(
+        rope_kg_per_m: T,
+        load_kg: T,
+        l: T,
+        l_rate: T,
+        l_accel: T,
+    ) -> Result<Self, ModelError> {
         if !(l > T::zero()) {
             return Err(ModelError::OutOfReach);
         }

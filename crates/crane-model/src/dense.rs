@@ -18,7 +18,10 @@ impl<T: Real, const CAP: usize> Square<T, CAP> {
         if n > CAP {
             return Err(ModelError::InvalidParameter("matrix size exceeds capacity"));
         }
-        Ok(Square { n, a: [[T::zero(); CAP]; CAP] })
+        Ok(Square {
+            n,
+            a: [[T::zero(); CAP]; CAP],
+        })
     }
 
     /// The size `n`.
@@ -29,7 +32,11 @@ impl<T: Real, const CAP: usize> Square<T, CAP> {
     /// Entry (i, j); zero outside the `n × n` block.
     #[inline]
     pub fn get(&self, i: usize, j: usize) -> T {
-        self.a.get(i).and_then(|r| r.get(j)).copied().unwrap_or_else(T::zero)
+        self.a
+            .get(i)
+            .and_then(|r| r.get(j))
+            .copied()
+            .unwrap_or_else(T::zero)
     }
 
     /// Sets entry (i, j); ignored outside the capacity.
@@ -138,7 +145,9 @@ impl<T: Real, const CAP: usize> Square<T, CAP> {
                 d -= l.a[j][k] * l.a[j][k];
             }
             if !(d > T::zero()) {
-                return Err(ModelError::Singular("Cholesky: matrix not positive definite"));
+                return Err(ModelError::Singular(
+                    "Cholesky: matrix not positive definite",
+                ));
             }
             let djj = d.sqrt();
             l.a[j][j] = djj;

@@ -2,7 +2,10 @@
 //! thesis's augmented solve (eq. 2.68) that the reduced solve is checked against.
 
 use crate::dense::Square;
-use crate::multibody::{Configuration, CraneModel, FreeCoordinates, FullSystem, ReducedEquations, RigidMotion, CONSTRAINTS, MAX_COORDS};
+use crate::multibody::{
+    Configuration, CraneModel, FreeCoordinates, FullSystem, ReducedEquations, RigidMotion,
+    CONSTRAINTS, MAX_COORDS,
+};
 use crate::profile::ActuatorMotion;
 use crate::{ModelError, Real};
 use nalgebra::{SMatrix, SVector, Vector2};
@@ -45,23 +48,42 @@ pub struct Reactions<T: Real> {
 
 impl<T: Real, const M: usize> CraneModel<T, M> {
     /// Stages 1–3: kinematics, projected equations and their solve.
-    pub fn evaluate(&self, act: ActuatorMotion<T>, load_kg: T, free: &FreeCoordinates<T, M>) -> Result<Evaluation<T, M>, ModelError> {
+    pub fn evaluate(
+        &self,
+        act: ActuatorMotion<T>,
+        load_kg: T,
+        free: &FreeCoordinates<T, M>,
+    ) -> Result<Evaluation<T, M>, ModelError> {
         self.evaluate_at(&self.rigid_motion(act, load_kg)?, free)
     }
 
     /// Stages 1b–3 with the time-only kinematics already computed.
-    pub fn evaluate_at(&self, rigid: &RigidMotion<T>, free: &FreeCoordinates<T, M>) -> Result<Evaluation<T, M>, ModelError> {
+    pub fn evaluate_at(
+        &self,
+        rigid: &RigidMotion<T>,
+        free: &FreeCoordinates<T, M>,
+    ) -> Result<Evaluation<T, M>, ModelError> {
         let config = self.configure(rigid, free);
         let equations = self.reduced_equations(&config);
         let (eta_accel, swing_accel) = equations.solve()?;
-        Ok(Evaluation { config, equations, eta_accel, swing_accel })
+        Ok(Evaluation {
+            config,
+            equations,
+            eta_accel,
+            swing_accel,
+        })
     }
 
     /// The full acceleration vector ẏ of eq. 2.68 from the free accelerations.
     pub fn full_accelerations(&self, ev: &Evaluation<T, M>) -> [T; MAX_COORDS] {
         let mut acc = [T::zero(); MAX_COORDS];
         let mech = &ev.config.mech;
-        let bodies = [(1usize, &mech.boom), (2, &mech.lug), (3, &mech.rod), (4, &mech.cylinder)];
+        let bodies = [
+            (1usize, &mech.boom),
+            (2, &mech.lug),
+            (3, &mech.rod),
+            (4, &mech.cylinder),
+        ];
         for (k, b) in bodies {
             let i = Self::body_index(k);
             acc[i] = b.acceleration.x;
@@ -72,7 +94,8 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
             acc[3 + k] = ev.eta_accel[k];
         }
         let i5 = Self::body_index(5);
-        let tip = ev.equations.tip_accel_known + ev.config.rot * (ev.config.tip_modes * ev.eta_accel);
+        let tip =
+            ev.equations.tip_accel_known + ev.config.rot * (ev.config.tip_modes * ev.eta_accel);
         acc[i5] = tip.x;
         acc[i5 + 1] = tip.y;
         acc[i5 + 2] = ev.swing_accel;
@@ -81,14 +104,20 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
 
     /// Stage 5: the Lagrange multipliers λ from Bᵀλ = Q + f + f_s + f_d − M·ẏ
     /// (eq. 2.68, first row), solved on the 14 dependent coordinates.
-    pub fn multipliers(&self, ev: &Evaluation<T, M>) -> Result<(FullSystem<T>, [T; CONSTRAINTS]), ModelError> {
+    pub fn multipliers(
+        &self,
+        ev: &Evaluation<T, M>,
+    ) -> Result<(FullSystem<T>, [T; CONSTRAINTS]), ModelError> {
         let sys = self.full_system(&ev.config)?;
         let acc = self.full_accelerations(ev);
         let m_acc = sys.mass.mul_vec(&acc);
         let dep = Self::dependent_indices();
         let bt = SMatrix::<T, CONSTRAINTS, CONSTRAINTS>::from_fn(|r, c| sys.jacobian[c][dep[r]]);
         let rhs = SVector::<T, CONSTRAINTS>::from_fn(|r, _| sys.force[dep[r]] - m_acc[dep[r]]);
-        let lambda = bt.lu().solve(&rhs).ok_or(ModelError::Singular("constraint Jacobian (dependent part)"))?;
+        let lambda = bt
+            .lu()
+            .solve(&rhs)
+            .ok_or(ModelError::Singular("constraint Jacobian (dependent part)"))?;
         let mut out = [T::zero(); CONSTRAINTS];
         for (o, l) in out.iter_mut().zip(lambda.iter()) {
             *o = *l;
@@ -118,7 +147,10 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
 
     /// The thesis's way (eq. 2.68): one solve of the augmented system
     /// [M Bᵀ; B 0]·[ẏ; λ] = [Q + f + f_s + f_d; γ] for accelerations and multipliers.
-    pub fn solve_augmented(&self, cfg: &Configuration<T, M>) -> Result<([T; MAX_COORDS], [T; CONSTRAINTS]), ModelError> {
+    pub fn solve_augmented(
+        &self,
+        cfg: &Configuration<T, M>,
+    ) -> Result<([T; MAX_COORDS], [T; CONSTRAINTS]), ModelError> {
         let sys = self.full_system(cfg)?;
         let n = sys.n;
         let mut a = Square::<T, MAX_AUGMENTED>::zeros(n + CONSTRAINTS)?;

@@ -79,8 +79,15 @@ pub fn generalized_eigen<T: Real, const CAP: usize>(
     for (i, o) in order.iter_mut().enumerate().take(n) {
         *o = i;
     }
-    order[..n].sort_unstable_by(|&a, &b| c.get(a, a).partial_cmp(&c.get(b, b)).unwrap_or(core::cmp::Ordering::Equal));
-    let mut out = EigenPairs { values: [T::zero(); CAP], vectors: Square::zeros(n)? };
+    order[..n].sort_unstable_by(|&a, &b| {
+        c.get(a, a)
+            .partial_cmp(&c.get(b, b))
+            .unwrap_or(core::cmp::Ordering::Equal)
+    });
+    let mut out = EigenPairs {
+        values: [T::zero(); CAP],
+        vectors: Square::zeros(n)?,
+    };
     for (dst, &src) in order[..n].iter().enumerate() {
         out.values[dst] = c.get(src, src);
         for i in 0..n {
@@ -91,7 +98,10 @@ pub fn generalized_eigen<T: Real, const CAP: usize>(
 }
 
 /// Cyclic Jacobi: diagonalizes the symmetric `a` in place, accumulating rotations in `v`.
-fn jacobi<T: Real, const CAP: usize>(a: &mut Square<T, CAP>, v: &mut Square<T, CAP>) -> Result<(), ModelError> {
+fn jacobi<T: Real, const CAP: usize>(
+    a: &mut Square<T, CAP>,
+    v: &mut Square<T, CAP>,
+) -> Result<(), ModelError> {
     let n = a.dim();
     let eps = T::default_epsilon();
     for _sweep in 0..MAX_SWEEPS {

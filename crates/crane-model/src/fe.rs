@@ -122,9 +122,14 @@ impl<T: Real> BeamElement<T> {
     /// Consistent mass matrix with rotary inertia, ∫ρ φᵀφ dV with φ of eq. A-29:
     /// ρA∫(ΦᵀΦ) dx + ρI∫(ψᵀψ) dx.
     pub fn mass(&self) -> ElementMatrix<T> {
-        let (l, ra, ri) = (self.length_m, self.mass_per_length(), self.density_kg_m3 * self.second_moment_m4);
+        let (l, ra, ri) = (
+            self.length_m,
+            self.mass_per_length(),
+            self.density_kg_m3 * self.second_moment_m4,
+        );
         integrate6(l, |s, i, j| {
-            l * (ra * (s.axial[i] * s.axial[j] + s.transverse[i] * s.transverse[j]) + ri * s.slope[i] * s.slope[j])
+            l * (ra * (s.axial[i] * s.axial[j] + s.transverse[i] * s.transverse[j])
+                + ri * s.slope[i] * s.slope[j])
         })
     }
 
@@ -135,7 +140,9 @@ impl<T: Real> BeamElement<T> {
             self.youngs_modulus_pa * self.area_m2,
             self.youngs_modulus_pa * self.second_moment_m4,
         );
-        integrate6(l, |s, i, j| l * (ea * s.axial_strain[i] * s.axial_strain[j] + ei * s.curvature[i] * s.curvature[j]))
+        integrate6(l, |s, i, j| {
+            l * (ea * s.axial_strain[i] * s.axial_strain[j] + ei * s.curvature[i] * s.curvature[j])
+        })
     }
 
     /// First moment of mass ∫ρ φ dV (2 × 6), the element part of the thesis's
@@ -158,7 +165,9 @@ impl<T: Real> BeamElement<T> {
     /// the thesis's AA (eq. 3.7) up to its sign convention for Ĩ.
     pub fn skew(&self) -> ElementMatrix<T> {
         let (l, ra) = (self.length_m, self.mass_per_length());
-        integrate6(l, |s, i, j| l * ra * (s.transverse[i] * s.axial[j] - s.axial[i] * s.transverse[j]))
+        integrate6(l, |s, i, j| {
+            l * ra * (s.transverse[i] * s.axial[j] - s.axial[i] * s.transverse[j])
+        })
     }
 }
 
@@ -178,11 +187,17 @@ impl<T: Real> BeamMesh<T> {
         let mut all = [elements[0]; MAX_ELEMENTS];
         all[..elements.len()].copy_from_slice(elements);
         for e in elements {
-            if !(e.length_m > T::zero() && e.area_m2 > T::zero() && e.second_moment_m4 > T::zero()) {
-                return Err(ModelError::InvalidParameter("element length, area and second moment must be positive"));
+            if !(e.length_m > T::zero() && e.area_m2 > T::zero() && e.second_moment_m4 > T::zero())
+            {
+                return Err(ModelError::InvalidParameter(
+                    "element length, area and second moment must be positive",
+                ));
             }
         }
-        Ok(BeamMesh { n_elements: elements.len(), elements: all })
+        Ok(BeamMesh {
+            n_elements: elements.len(),
+            elements: all,
+        })
     }
 
     /// The elements.
@@ -202,12 +217,17 @@ impl<T: Real> BeamMesh<T> {
 
     /// Distance of node `i` from the first node along the axis (m).
     pub fn node_x(&self, i: usize) -> T {
-        self.elements().iter().take(i).fold(T::zero(), |acc, e| acc + e.length_m)
+        self.elements()
+            .iter()
+            .take(i)
+            .fold(T::zero(), |acc, e| acc + e.length_m)
     }
 
     /// Total mass (kg).
     pub fn mass_kg(&self) -> T {
-        self.elements().iter().fold(T::zero(), |acc, e| acc + e.mass_per_length() * e.length_m)
+        self.elements()
+            .iter()
+            .fold(T::zero(), |acc, e| acc + e.mass_per_length() * e.length_m)
     }
 
     /// The undeformed nodal positions e0 (eq. 2.10): u = x of the node, v = θ = 0.

@@ -49,15 +49,36 @@ pub struct StepStats {
 
 impl<T: Real, const M: usize> State<T, M> {
     /// A state at time `t_s` with accelerations evaluated from the equations.
-    pub fn new(model: &CraneModel<T, M>, t_s: T, act: ActuatorMotion<T>, load_kg: T, free: FreeCoordinates<T, M>) -> Result<(Self, Evaluation<T, M>), ModelError> {
+    pub fn new(
+        model: &CraneModel<T, M>,
+        t_s: T,
+        act: ActuatorMotion<T>,
+        load_kg: T,
+        free: FreeCoordinates<T, M>,
+    ) -> Result<(Self, Evaluation<T, M>), ModelError> {
         let ev = model.evaluate(act, load_kg, &free)?;
-        Ok((State { t_s, free, eta_accel: ev.eta_accel, swing_accel: ev.swing_accel, load_kg }, ev))
+        Ok((
+            State {
+                t_s,
+                free,
+                eta_accel: ev.eta_accel,
+                swing_accel: ev.swing_accel,
+                load_kg,
+            },
+            ev,
+        ))
     }
 
     /// Advances by `h` seconds; `act_end` is the actuator motion at the end of the
     /// step. The accelerations kept are the converged Newton iterate, which satisfies
     /// the equations at the new state to `tolerance`.
-    pub fn step(&mut self, model: &CraneModel<T, M>, h: T, act_end: ActuatorMotion<T>, tolerance: T) -> Result<StepStats, ModelError> {
+    pub fn step(
+        &mut self,
+        model: &CraneModel<T, M>,
+        h: T,
+        act_end: ActuatorMotion<T>,
+        tolerance: T,
+    ) -> Result<StepStats, ModelError> {
         let half = T::lit(0.5);
         let quarter_h2 = h * h * T::lit(0.25);
         let t1 = self.t_s + h;
@@ -100,11 +121,26 @@ impl<T: Real, const M: usize> State<T, M> {
             let (d_eta, d_sw) = jac.solve(&r_eta, r_sw)?;
             a_eta -= d_eta;
             a_sw -= d_sw;
-            let size = a_eta.amax().max(a_sw.abs()) + T::one();
+            // Converged when the correction is small against the size of the terms
+            // that make up the accelerations (gravity, ω²·η): in f32 the equilibrium
+            // accelerations themselves are rounding left over from those terms.
+            let mut size = a_eta.amax().max(a_sw.abs()) + model.gravity_m_s2;
+            for k in 0..M {
+                let w = model.modes.omega_rad_s[k];
+                size += w * w * free.eta[k].abs();
+            }
             if d_eta.amax().max(d_sw.abs()) <= tolerance * size {
                 let free = predict(&a_eta, a_sw);
-                *self = State { t_s: t1, free, eta_accel: a_eta, swing_accel: a_sw, load_kg: self.load_kg };
-                return Ok(StepStats { iterations: iteration });
+                *self = State {
+                    t_s: t1,
+                    free,
+                    eta_accel: a_eta,
+                    swing_accel: a_sw,
+                    load_kg: self.load_kg,
+                };
+                return Ok(StepStats {
+                    iterations: iteration,
+                });
             }
         }
         Err(ModelError::NoConvergence("Newmark step"))

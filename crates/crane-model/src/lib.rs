@@ -7,6 +7,10 @@
 //! The work seam for the limiter is [`load_model::HookLoadModel`].
 #![cfg_attr(not(any(test, feature = "std")), no_std)]
 #![forbid(unsafe_code)]
+// `!(x > 0)` is deliberate throughout: unlike `x <= 0` it also rejects NaN.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+// Matrix loops index several arrays with one index, as the equations they implement do.
+#![allow(clippy::needless_range_loop)]
 
 pub mod bodies;
 pub mod crane;
@@ -25,6 +29,7 @@ pub mod real;
 pub mod section;
 pub mod simulation;
 pub mod statics;
+pub mod thesis_modes;
 pub mod tipping;
 
 pub use crane::CraneData;

@@ -76,7 +76,10 @@ impl<T: Real> MechanismGeometry<T> {
     pub fn new(crane: &crate::CraneData) -> Self {
         MechanismGeometry {
             boom_foot: Vector2::new(T::lit(crane.boom_foot[0]), T::lit(crane.boom_foot[1])),
-            cylinder_foot: Vector2::new(T::lit(crane.cylinder_foot[0]), T::lit(crane.cylinder_foot[1])),
+            cylinder_foot: Vector2::new(
+                T::lit(crane.cylinder_foot[0]),
+                T::lit(crane.cylinder_foot[1]),
+            ),
             lug_length_m: T::lit(crane.lug_rod.length_m),
             lug_angle_rad: T::lit(crane.lug_angle_rad()),
             rod_length_m: T::lit(crane.piston_rod.length_m),

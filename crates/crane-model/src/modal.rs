@@ -10,7 +10,9 @@
 use crate::crane::CraneData;
 use crate::dense::Square;
 use crate::eigen::generalized_eigen;
-use crate::fe::{BeamElement, BeamMesh, NodalMatrix, NodalVector, DOF_PER_NODE, MAX_DOF, MAX_ELEMENTS};
+use crate::fe::{
+    BeamElement, BeamMesh, NodalMatrix, NodalVector, DOF_PER_NODE, MAX_DOF, MAX_ELEMENTS,
+};
 use crate::section::boom_section_at;
 use crate::{ModelError, Real};
 
@@ -54,10 +56,22 @@ pub struct ModeChoice {
 /// The thesis's basis (§4.3): first longitudinal, first bending of A0–A, first two
 /// bending of A–C, in the order of the listing's `XXX` columns.
 pub const THESIS_BASIS: [ModeChoice; 4] = [
-    ModeChoice { kind: ModeKind::Longitudinal, ordinal: 0 },
-    ModeChoice { kind: ModeKind::BendingFootToLug, ordinal: 0 },
-    ModeChoice { kind: ModeKind::BendingLugToTip, ordinal: 0 },
-    ModeChoice { kind: ModeKind::BendingLugToTip, ordinal: 1 },
+    ModeChoice {
+        kind: ModeKind::Longitudinal,
+        ordinal: 0,
+    },
+    ModeChoice {
+        kind: ModeKind::BendingFootToLug,
+        ordinal: 0,
+    },
+    ModeChoice {
+        kind: ModeKind::BendingLugToTip,
+        ordinal: 0,
+    },
+    ModeChoice {
+        kind: ModeKind::BendingLugToTip,
+        ordinal: 1,
+    },
 ];
 
 /// Refinement of the boom mesh. The listing's rule: equal elements in A0–G, and in
@@ -73,7 +87,10 @@ pub struct MeshRefinement {
 
 impl MeshRefinement {
     /// The thesis's 12-element mesh.
-    pub const THESIS: MeshRefinement = MeshRefinement { elements_foot_to_g: 2, elements_g_to_lug: 2 };
+    pub const THESIS: MeshRefinement = MeshRefinement {
+        elements_foot_to_g: 2,
+        elements_g_to_lug: 2,
+    };
 }
 
 /// Where the thesis reads transverse deflections: nodes 3, 8 and 13 of its mesh
@@ -112,12 +129,21 @@ impl<T: Real> ModalAnalysis<T> {
         let lug_node = refinement.elements_foot_to_g + refinement.elements_g_to_lug;
         // Boundary conditions (listing: rows 1, 2, 14, 15 dropped): x and y of node 1
         // at the pin A0; transverse displacement and rotation of the node at A.
-        let fixed = [0, 1, DOF_PER_NODE * lug_node + 1, DOF_PER_NODE * lug_node + 2];
+        let fixed = [
+            0,
+            1,
+            DOF_PER_NODE * lug_node + 1,
+            DOF_PER_NODE * lug_node + 2,
+        ];
         Self::with_boundary_conditions(mesh, lug_node, &fixed)
     }
 
     /// Solves a mesh with arbitrary fixed dof; `lug_node` only affects classification.
-    pub fn with_boundary_conditions(mesh: BeamMesh<T>, lug_node: usize, fixed: &[usize]) -> Result<Self, ModelError> {
+    pub fn with_boundary_conditions(
+        mesh: BeamMesh<T>,
+        lug_node: usize,
+        fixed: &[usize],
+    ) -> Result<Self, ModelError> {
         let asm = mesh.assemble()?;
         let n = mesh.n_dof();
         let mut free = [0usize; MAX_DOF];
@@ -170,7 +196,12 @@ impl<T: Real> ModalAnalysis<T> {
 
     /// Natural frequency ω (rad/s) of constrained mode `k` (ascending).
     pub fn frequency_rad_s(&self, k: usize) -> T {
-        self.values.get(k).copied().unwrap_or_else(T::zero).max(T::zero()).sqrt()
+        self.values
+            .get(k)
+            .copied()
+            .unwrap_or_else(T::zero)
+            .max(T::zero())
+            .sqrt()
     }
 
     /// Kind of constrained mode `k`.
@@ -219,9 +250,15 @@ impl<T: Real> ModalAnalysis<T> {
 
     /// Reduces to the modal basis `basis` with Rayleigh damping ratio `zeta` at the
     /// two lowest retained frequencies: the time-invariant data of eqs. 3.1–3.11.
-    pub fn reduce<const M: usize>(&self, basis: &[ModeChoice; M], zeta: T) -> Result<BoomModes<T, M>, ModelError> {
+    pub fn reduce<const M: usize>(
+        &self,
+        basis: &[ModeChoice; M],
+        zeta: T,
+    ) -> Result<BoomModes<T, M>, ModelError> {
         if M == 0 || M > MAX_MODES {
-            return Err(ModelError::InvalidParameter("retained mode count must be 1..=8"));
+            return Err(ModelError::InvalidParameter(
+                "retained mode count must be 1..=8",
+            ));
         }
         let n = self.mesh.n_dof();
         let mut cols = [0usize; M];
@@ -302,7 +339,10 @@ impl<T: Real> ModalAnalysis<T> {
             }
         }
         // Rayleigh damping from ζ at the two lowest retained frequencies (eqs. 2.54–2.56).
-        let (mut w1, mut w2) = (T::max_value().unwrap_or_else(T::one), T::max_value().unwrap_or_else(T::one));
+        let (mut w1, mut w2) = (
+            T::max_value().unwrap_or_else(T::one),
+            T::max_value().unwrap_or_else(T::one),
+        );
         for &w in out.omega_rad_s.iter() {
             if w < w1 {
                 w2 = w1;
@@ -342,7 +382,11 @@ impl<T: Real> ModalAnalysis<T> {
     }
 
     /// Least-squares modal coordinates of a nodal vector: (χᵀχ)⁻¹χᵀα.
-    fn project<const M: usize>(&self, alpha: &NodalVector<T>, cols: &[usize; M]) -> Result<[T; M], ModelError> {
+    fn project<const M: usize>(
+        &self,
+        alpha: &NodalVector<T>,
+        cols: &[usize; M],
+    ) -> Result<[T; M], ModelError> {
         let n = self.mesh.n_dof();
         let mut gram = Square::<T, MAX_MODES>::zeros(M)?;
         let mut rhs = [T::zero(); MAX_MODES];
@@ -409,7 +453,9 @@ fn classify<T: Real>(v: &NodalMatrix<T>, col: usize, n: usize, lug_node: usize) 
 pub fn boom_mesh<T: Real>(crane: &CraneData, r: MeshRefinement) -> Result<BeamMesh<T>, ModelError> {
     let boom = &crane.boom;
     if r.elements_foot_to_g == 0 || r.elements_g_to_lug == 0 {
-        return Err(ModelError::InvalidParameter("mesh refinement counts must be positive"));
+        return Err(ModelError::InvalidParameter(
+            "mesh refinement counts must be positive",
+        ));
     }
     let h1 = boom.foot_to_g_m / r.elements_foot_to_g as f64;
     let h2 = (boom.foot_to_lug_m - boom.foot_to_g_m) / r.elements_g_to_lug as f64;
@@ -418,7 +464,9 @@ pub fn boom_mesh<T: Real>(crane: &CraneData, r: MeshRefinement) -> Result<BeamMe
     let mut x = 0.0;
     let mut push = |x_end: f64, count: &mut usize| -> Result<(), ModelError> {
         *count += 1;
-        *ends.get_mut(*count).ok_or(ModelError::InvalidParameter("mesh exceeds 24 elements"))? = x_end;
+        *ends
+            .get_mut(*count)
+            .ok_or(ModelError::InvalidParameter("mesh exceeds 24 elements"))? = x_end;
         Ok(())
     };
     for _ in 0..r.elements_foot_to_g {
@@ -515,6 +563,66 @@ pub struct BoomModes<T, const M: usize> {
 }
 
 impl<T: Real, const M: usize> BoomModes<T, M> {
+    /// Writes this value as Rust source of a `const` named `name` of type
+    /// `BoomModes<f32, M>`, every number as the shortest f32 literal that reads back
+    /// to the same bits: how the controller gets its modes without FE or eigen work.
+    pub fn write_f32_const(&self, name: &str, w: &mut impl core::fmt::Write) -> core::fmt::Result {
+        let m = self.cast::<f32>();
+        let arr = |w: &mut dyn core::fmt::Write, a: &[f32]| -> core::fmt::Result {
+            w.write_str("[")?;
+            for (i, x) in a.iter().enumerate() {
+                if i > 0 {
+                    w.write_str(", ")?;
+                }
+                write!(w, "{x:?}")?;
+            }
+            w.write_str("]")
+        };
+        writeln!(w, "pub const {name}: BoomModes<f32, {M}> = BoomModes {{")?;
+        write!(w, "    kinds: [")?;
+        for k in m.kinds.iter() {
+            write!(w, "ModeKind::{k:?}, ")?;
+        }
+        writeln!(w, "],")?;
+        let fields1: [(&str, &[f32; M]); 5] = [
+            ("omega_rad_s", &m.omega_rad_s),
+            ("damping", &m.damping),
+            ("inertia_coupling", &m.inertia_coupling),
+            ("skew_rest", &m.skew_rest),
+            ("lug_rotation_modes", &m.lug_rotation_modes),
+        ];
+        for (n, a) in fields1 {
+            write!(w, "    {n}: ")?;
+            arr(w, a)?;
+            writeln!(w, ",")?;
+        }
+        for (n, x) in [("rayleigh_alpha", m.rayleigh_alpha), ("rayleigh_beta", m.rayleigh_beta), ("mass_kg", m.mass_kg), ("inertia_rest", m.inertia_rest), ("length_m", m.length_m), ("lug_x_m", m.lug_x_m)] {
+            writeln!(w, "    {n}: {x:?},")?;
+        }
+        write!(w, "    first_moment_rest: ")?;
+        arr(w, &m.first_moment_rest)?;
+        writeln!(w, ",")?;
+        writeln!(w, "    deflection_nodes: {:?},", m.deflection_nodes)?;
+        let rows = |w: &mut dyn core::fmt::Write, n: &str, rows: &[&[f32]]| -> core::fmt::Result {
+            write!(w, "    {n}: [")?;
+            for r in rows {
+                arr(w, r)?;
+                w.write_str(", ")?;
+            }
+            writeln!(w, "],")
+        };
+        rows(w, "first_moment_modes", &[&m.first_moment_modes[0], &m.first_moment_modes[1]])?;
+        rows(w, "tip_modes", &[&m.tip_modes[0], &m.tip_modes[1]])?;
+        let skew: [&[f32]; M] = core::array::from_fn(|i| &m.skew_modes[i][..]);
+        rows(w, "skew_modes", &skew)?;
+        rows(w, "deflection_modes", &[&m.deflection_modes[0], &m.deflection_modes[1], &m.deflection_modes[2]])?;
+        let sg: [&[f32]; M] = core::array::from_fn(|i| &m.static_gravity[i][..]);
+        rows(w, "static_gravity", &sg)?;
+        let st: [&[f32]; M] = core::array::from_fn(|i| &m.static_tip[i][..]);
+        rows(w, "static_tip", &st)?;
+        writeln!(w, "}};")
+    }
+
     /// Converts to another float type (f64 analysis → f32 controller data).
     pub fn cast<U: Real>(&self) -> BoomModes<U, M> {
         let c = |x: T| U::lit(x.to_f64());
@@ -527,7 +635,10 @@ impl<T: Real, const M: usize> BoomModes<T, M> {
             rayleigh_beta: c(self.rayleigh_beta),
             mass_kg: c(self.mass_kg),
             first_moment_rest: [c(self.first_moment_rest[0]), c(self.first_moment_rest[1])],
-            first_moment_modes: [c1(&self.first_moment_modes[0]), c1(&self.first_moment_modes[1])],
+            first_moment_modes: [
+                c1(&self.first_moment_modes[0]),
+                c1(&self.first_moment_modes[1]),
+            ],
             inertia_rest: c(self.inertia_rest),
             inertia_coupling: c1(&self.inertia_coupling),
             skew_rest: c1(&self.skew_rest),
@@ -538,8 +649,12 @@ impl<T: Real, const M: usize> BoomModes<T, M> {
             lug_rotation_modes: c1(&self.lug_rotation_modes),
             deflection_nodes: self.deflection_nodes,
             deflection_modes: core::array::from_fn(|i| c1(&self.deflection_modes[i])),
-            static_gravity: core::array::from_fn(|i| [c(self.static_gravity[i][0]), c(self.static_gravity[i][1])]),
-            static_tip: core::array::from_fn(|i| [c(self.static_tip[i][0]), c(self.static_tip[i][1])]),
+            static_gravity: core::array::from_fn(|i| {
+                [c(self.static_gravity[i][0]), c(self.static_gravity[i][1])]
+            }),
+            static_tip: core::array::from_fn(|i| {
+                [c(self.static_tip[i][0]), c(self.static_tip[i][1])]
+            }),
         }
     }
 }

@@ -55,7 +55,8 @@ pub type ThesisModel<T> = CraneModel<T, 4>;
 impl<T: Real, const M: usize> CraneModel<T, M> {
     /// A model of `crane` with precomputed modes.
     pub fn new(crane: &CraneData, modes: BoomModes<T, M>) -> Self {
-        let r = |rod: &crate::crane::RodData| RigidMass::rod(rod.mass_kg(), rod.length_m, rod.radius_m);
+        let r =
+            |rod: &crate::crane::RodData| RigidMass::rod(rod.mass_kg(), rod.length_m, rod.radius_m);
         CraneModel {
             crane: *crane,
             geometry: MechanismGeometry::new(crane),
@@ -69,37 +70,65 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         }
     }
 
-    /// Builds the modes of `crane` (FE + eigen, in `T`) with `basis` and the given mesh.
+    /// Builds the modes of `crane` with `basis` and the given mesh. The structural
+    /// analysis (FE assembly and eigen-solve) always runs in f64 and is then cast
+    /// to `T`: K's eigenvalues span 1.7·10⁷, beyond f32's 7 digits (an f32 solve
+    /// misses the first bending frequency by 3.5 %), and the thesis does this
+    /// part once, in advance, anyway (§2.6).
     pub fn build(crane: &CraneData, refinement: MeshRefinement, basis: &[crate::modal::ModeChoice; M]) -> Result<Self, ModelError> {
-        let analysis = ModalAnalysis::<T>::new(crane, refinement)?;
-        let modes = analysis.reduce(basis, T::lit(crane.boom.damping_ratio))?;
-        Ok(Self::new(crane, modes))
+        let analysis = ModalAnalysis::<f64>::new(crane, refinement)?;
+        let modes = analysis.reduce(basis, crane.boom.damping_ratio)?;
+        Ok(Self::new(crane, modes.cast::<T>()))
     }
 
     /// The rigid-body tip height of the boom at angle θ1, and the rope length that
     /// keeps the load at its clearance, with its time derivatives.
-    fn pendulum(&self, boom: &crate::mechanism::BodyMotion<T>, load_kg: T) -> Result<Pendulum<T>, ModelError> {
+    fn pendulum(
+        &self,
+        boom: &crate::mechanism::BodyMotion<T>,
+        load_kg: T,
+    ) -> Result<Pendulum<T>, ModelError> {
         let (s, c) = (boom.angle.sin(), boom.angle.cos());
         let (w, al) = (boom.angular_velocity, boom.angular_acceleration);
         let lc = self.modes.length_m;
         let l = boom.position.y + lc * s - self.load_clearance_m;
-        Pendulum::new(self.rope_kg_per_m, load_kg, l, lc * c * w, lc * (c * al - s * w * w))
+        Pendulum::new(
+            self.rope_kg_per_m,
+            load_kg,
+            l,
+            lc * c * w,
+            lc * (c * al - s * w * w),
+        )
     }
 
     /// Stage 1a, the part of the kinematics that depends on time only: bodies 1–4
     /// from the actuator, the rope length, the oil in the cylinder. Computed once
     /// per time step and shared by every Newton iteration.
-    pub fn rigid_motion(&self, act: ActuatorMotion<T>, load_kg: T) -> Result<RigidMotion<T>, ModelError> {
+    pub fn rigid_motion(
+        &self,
+        act: ActuatorMotion<T>,
+        load_kg: T,
+    ) -> Result<RigidMotion<T>, ModelError> {
         let mech = self.geometry.motion(act)?;
         let pendulum = self.pendulum(&mech.boom, load_kg)?;
         let cylinder = self.cylinder.at_extension(act.extension_m)?;
         let th1 = mech.boom.angle;
         let rot = Matrix2::new(th1.cos(), -th1.sin(), th1.sin(), th1.cos());
-        Ok(RigidMotion { mech, pendulum, cylinder, rot, load_kg })
+        Ok(RigidMotion {
+            mech,
+            pendulum,
+            cylinder,
+            rot,
+            load_kg,
+        })
     }
 
     /// Stage 1b: every body's position and velocity given the free coordinates.
-    pub fn configure(&self, rigid: &RigidMotion<T>, free: &FreeCoordinates<T, M>) -> Configuration<T, M> {
+    pub fn configure(
+        &self,
+        rigid: &RigidMotion<T>,
+        free: &FreeCoordinates<T, M>,
+    ) -> Configuration<T, M> {
         let eta = SVector::<T, M>::from_column_slice(&free.eta);
         let eta_rate = SVector::<T, M>::from_column_slice(&free.eta_rate);
         let tip_modes = SMatrix::<T, 2, M>::from_fn(|r, c| self.modes.tip_modes[r][c]);
@@ -107,7 +136,8 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         let tip_body = Vector2::new(self.modes.length_m, T::zero()) + tip_modes * eta;
         let w1 = rigid.mech.boom.angular_velocity;
         let tip_position = rigid.mech.boom.position + rot * tip_body;
-        let tip_velocity = rot * (Vector2::new(-tip_body.y, tip_body.x) * w1 + tip_modes * eta_rate);
+        let tip_velocity =
+            rot * (Vector2::new(-tip_body.y, tip_body.x) * w1 + tip_modes * eta_rate);
         Configuration {
             mech: rigid.mech,
             pendulum: rigid.pendulum,
@@ -127,7 +157,12 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
 
     /// Stage 1, kinematics: every body's position and velocity for actuator motion
     /// `act`, hook load, and the free coordinates (modes and swing) with their rates.
-    pub fn kinematics(&self, act: ActuatorMotion<T>, load_kg: T, free: &FreeCoordinates<T, M>) -> Result<Configuration<T, M>, ModelError> {
+    pub fn kinematics(
+        &self,
+        act: ActuatorMotion<T>,
+        load_kg: T,
+        free: &FreeCoordinates<T, M>,
+    ) -> Result<Configuration<T, M>, ModelError> {
         Ok(self.configure(&self.rigid_motion(act, load_kg)?, free))
     }
 
@@ -150,7 +185,8 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         let h = SVector::<T, M>::from_column_slice(&m.skew_rest) + skew * cfg.eta;
         // Body 1, η rows: gravity (eq. 2.51), velocity terms Q_η (eq. 3.11), stiffness
         // (eq. 2.52), damping (eq. 2.53), minus the inertia of the prescribed rotation.
-        let mut f_eta = d.transpose() * (cfg.rot.transpose() * g) + coupling * (w1 * w1) - skew * cfg.eta_rate * (two * w1)
+        let mut f_eta = d.transpose() * (cfg.rot.transpose() * g) + coupling * (w1 * w1)
+            - skew * cfg.eta_rate * (two * w1)
             - h * al1;
         for k in 0..M {
             let wk = m.omega_rad_s[k];
@@ -164,16 +200,31 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         let tj_tip = cfg.rot * Vector2::new(-cfg.tip_body.y, cfg.tip_body.x);
         let tip_modes_world = cfg.rot * cfg.tip_modes;
         let c5 = tj_tip * al1 - cfg.rot * cfg.tip_body * (w1 * w1)
-            + (cfg.rot * (Matrix2::new(T::zero(), -T::one(), T::one(), T::zero()) * (cfg.tip_modes * cfg.eta_rate))) * (two * w1);
-        let f5_r = g * p.mass_kg + e5 * (p.first_moment_kg_m * w5 * w5 - p.first_moment_per_m * p.length_accel_m_s2)
+            + (cfg.rot
+                * (Matrix2::new(T::zero(), -T::one(), T::one(), T::zero())
+                    * (cfg.tip_modes * cfg.eta_rate)))
+                * (two * w1);
+        let f5_r = g * p.mass_kg
+            + e5 * (p.first_moment_kg_m * w5 * w5 - p.first_moment_per_m * p.length_accel_m_s2)
             - n5 * (two * p.first_moment_per_m * p.length_rate_m_s * w5);
-        let f5_th = p.first_moment_kg_m * n5.dot(&g) - two * p.inertia_per_m2 * p.length_m * p.length_rate_m_s * w5;
+        let f5_th = p.first_moment_kg_m * n5.dot(&g)
+            - two * p.inertia_per_m2 * p.length_m * p.length_rate_m_s * w5;
         let r5 = f5_r - c5 * p.mass_kg;
         f_eta += tip_modes_world.transpose() * r5;
         let f_swing = f5_th - p.first_moment_kg_m * n5.dot(&c5);
-        let a = SMatrix::<T, M, M>::identity() + cfg.tip_modes.transpose() * cfg.tip_modes * p.mass_kg;
+        let a =
+            SMatrix::<T, M, M>::identity() + cfg.tip_modes.transpose() * cfg.tip_modes * p.mass_kg;
         let b = tip_modes_world.transpose() * (n5 * p.first_moment_kg_m);
-        ReducedEquations { mass: Block2 { a, b, c: p.inertia_kg_m2 }, force_eta: f_eta, force_swing: f_swing, tip_accel_known: c5 }
+        ReducedEquations {
+            mass: Block2 {
+                a,
+                b,
+                c: p.inertia_kg_m2,
+            },
+            force_eta: f_eta,
+            force_swing: f_swing,
+            tip_accel_known: c5,
+        }
     }
 
     /// The generalized coordinates, velocities, mass matrix M, forces
@@ -243,12 +294,27 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
             sys.force[3 + k] = f_eta[k];
         }
         // ---- Rigid bodies 2–4 (eqs. 3.12–3.16).
-        let rigid = [(1usize, &mech.lug, self.lug), (2, &mech.rod, self.rod), (3, &mech.cylinder, cfg.cylinder)];
+        let rigid = [
+            (1usize, &mech.lug, self.lug),
+            (2, &mech.rod, self.rod),
+            (3, &mech.cylinder, cfg.cylinder),
+        ];
         for (body, motion, mass) in rigid {
             let base = 3 + M + 3 * (body - 1);
-            sys.set_body(base, motion.position, motion.angle, motion.velocity, motion.angular_velocity);
+            sys.set_body(
+                base,
+                motion.position,
+                motion.angle,
+                motion.velocity,
+                motion.angular_velocity,
+            );
             let (e, nrm) = (unit(motion.angle), normal(motion.angle));
-            sys.add_rigid_mass(base, mass.mass_kg, nrm * mass.first_moment_kg_m, mass.inertia_kg_m2);
+            sys.add_rigid_mass(
+                base,
+                mass.mass_kg,
+                nrm * mass.first_moment_kg_m,
+                mass.inertia_kg_m2,
+            );
             let w = motion.angular_velocity;
             let f = g * mass.mass_kg + e * (mass.first_moment_kg_m * w * w);
             sys.force[base] = f.x;
@@ -262,11 +328,13 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         let (e5, n5) = (unit(th5), normal(th5));
         sys.set_body(base5, cfg.tip_position, th5, cfg.tip_velocity, w5);
         sys.add_rigid_mass(base5, p.mass_kg, n5 * p.first_moment_kg_m, p.inertia_kg_m2);
-        let f5 = g * p.mass_kg + e5 * (p.first_moment_kg_m * w5 * w5 - p.first_moment_per_m * p.length_accel_m_s2)
+        let f5 = g * p.mass_kg
+            + e5 * (p.first_moment_kg_m * w5 * w5 - p.first_moment_per_m * p.length_accel_m_s2)
             - n5 * (two * p.first_moment_per_m * p.length_rate_m_s * w5);
         sys.force[base5] = f5.x;
         sys.force[base5 + 1] = f5.y;
-        sys.force[base5 + 2] = p.first_moment_kg_m * n5.dot(&g) - two * p.inertia_per_m2 * p.length_m * p.length_rate_m_s * w5;
+        sys.force[base5 + 2] = p.first_moment_kg_m * n5.dot(&g)
+            - two * p.inertia_per_m2 * p.length_m * p.length_rate_m_s * w5;
         self.constraints(cfg, &mut sys);
         Ok(sys)
     }
@@ -281,7 +349,14 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         let a0 = self.geometry.boom_foot;
         let b0 = self.geometry.cylinder_foot;
         // 1–4: the pins of bodies 1 and 2 at A0; 5–6: the pin of body 4 at B0.
-        let pins = [(0usize, 0usize, a0.x), (1, 1, a0.y), (2, b2, a0.x), (3, b2 + 1, a0.y), (4, b4, b0.x), (5, b4 + 1, b0.y)];
+        let pins = [
+            (0usize, 0usize, a0.x),
+            (1, 1, a0.y),
+            (2, b2, a0.x),
+            (3, b2 + 1, a0.y),
+            (4, b4, b0.x),
+            (5, b4 + 1, b0.y),
+        ];
         for (row, col, target) in pins {
             sys.jacobian[row][col] = T::one();
             sys.residual[row] = sys.position[col] - target;
@@ -294,7 +369,8 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
             lug_rot += self.modes.lug_rotation_modes[k] * cfg.eta[k];
         }
         sys.jacobian[6][b2 + 2] = -T::one();
-        sys.residual[6] = sys.position[2] + lug_rot - sys.position[b2 + 2] - self.geometry.lug_angle_rad;
+        sys.residual[6] =
+            sys.position[2] + lug_rot - sys.position[b2 + 2] - self.geometry.lug_angle_rad;
         // 8–9: revolute at D: R2 + L2·e2 − R3 − L3·e3 = 0 (eq. 3.32).
         let (l2, l3) = (self.geometry.lug_length_m, self.geometry.rod_length_m);
         let (th2, th3) = (sys.position[b2 + 2], sys.position[b3 + 2]);
@@ -328,7 +404,8 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         sys.gamma[9] = two * w4 * e4.dot(&dv) + w4 * w4 * n4.dot(&dr);
         sys.residual[9] = n4.dot(&dr);
         sys.jacobian[13][b4 + 2] = n4.dot(&dr);
-        sys.gamma[13] = cfg.mech.actuator.accel_m_s2 - two * w4 * n4.dot(&dv) + w4 * w4 * e4.dot(&dr);
+        sys.gamma[13] =
+            cfg.mech.actuator.accel_m_s2 - two * w4 * n4.dot(&dv) + w4 * w4 * e4.dot(&dr);
         sys.residual[13] = e4.dot(&dr) - cfg.mech.actuator.extension_m;
         // 11: equal angles of piston rod and cylinder (eq. 3.43).
         sys.jacobian[10][b3 + 2] = T::one();
@@ -339,7 +416,8 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         let jmat = Matrix2::new(T::zero(), -T::one(), T::one(), T::zero());
         let tj_tip = cfg.rot * (jmat * cfg.tip_body);
         let t_modes = cfg.rot * cfg.tip_modes;
-        let gam_c = cfg.rot * cfg.tip_body * (w1 * w1) - cfg.rot * (jmat * (cfg.tip_modes * cfg.eta_rate)) * (two * w1);
+        let gam_c = cfg.rot * cfg.tip_body * (w1 * w1)
+            - cfg.rot * (jmat * (cfg.tip_modes * cfg.eta_rate)) * (two * w1);
         let phi_c = x(sys, 0) + cfg.rot * cfg.tip_body - x(sys, b5);
         for i in 0..2 {
             let row = 11 + i;
@@ -366,7 +444,22 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
     /// The dependent coordinates (everything but the modes and the swing angle θ5).
     pub fn dependent_indices() -> [usize; CONSTRAINTS] {
         let (b2, b3, b4, b5) = (3 + M, 3 + M + 3, 3 + M + 6, 3 + M + 9);
-        [0, 1, 2, b2, b2 + 1, b2 + 2, b3, b3 + 1, b3 + 2, b4, b4 + 1, b4 + 2, b5, b5 + 1]
+        [
+            0,
+            1,
+            2,
+            b2,
+            b2 + 1,
+            b2 + 2,
+            b3,
+            b3 + 1,
+            b3 + 2,
+            b4,
+            b4 + 1,
+            b4 + 2,
+            b5,
+            b5 + 1,
+        ]
     }
 }
 
@@ -448,7 +541,9 @@ impl<T: Real, const M: usize> Block2<T, M> {
             return Err(ModelError::Singular("swing inertia"));
         }
         let schur = self.a - self.b * self.b.transpose() / self.c;
-        let chol = schur.cholesky().ok_or(ModelError::Singular("reduced mass matrix"))?;
+        let chol = schur
+            .cholesky()
+            .ok_or(ModelError::Singular("reduced mass matrix"))?;
         let x = chol.solve(&(f - self.b * (g / self.c)));
         let y = (g - self.b.dot(&x)) / self.c;
         if !(x.iter().all(|v| v.is_finite()) && y.is_finite()) {

@@ -50,7 +50,8 @@ impl<T: Real> StrokeProfile<T> {
     /// v0 = stroke / (t1/2 + (t2 − t1) + (t3 − t2)/2) (listing `VZERO`).
     pub fn v0_m_s(&self) -> T {
         let half = T::lit(0.5);
-        (self.end_m - self.start_m) / (half * self.t1_s + (self.t2_s - self.t1_s) + half * (self.t3_s - self.t2_s))
+        (self.end_m - self.start_m)
+            / (half * self.t1_s + (self.t2_s - self.t1_s) + half * (self.t3_s - self.t2_s))
     }
 
     /// Position, velocity and acceleration at time `t_s`.
@@ -93,6 +94,10 @@ impl<T: Real> StrokeProfile<T> {
                 (x, T::zero(), T::zero())
             }
         };
-        ActuatorMotion { extension_m: self.start_m + x, rate_m_s: v, accel_m_s2: a }
+        ActuatorMotion {
+            extension_m: self.start_m + x,
+            rate_m_s: v,
+            accel_m_s2: a,
+        }
     }
 }

@@ -64,7 +64,11 @@ impl OctagonDims {
     /// The outline moved inwards by a wall `t`: each edge shortens by 2·t·tan 22.5°.
     pub fn inset(&self, wall_m: f64) -> OctagonDims {
         let cut = 2.0 * wall_m * (core::f64::consts::SQRT_2 - 1.0);
-        OctagonDims { e_m: self.e_m - cut, c_m: self.c_m - cut, f_m: self.f_m - cut }
+        OctagonDims {
+            e_m: self.e_m - cut,
+            c_m: self.c_m - cut,
+            f_m: self.f_m - cut,
+        }
     }
 
     /// The hollow section with wall `t` (m).
@@ -81,7 +85,8 @@ impl OctagonDims {
 /// linear from A0 to G and from G to C (thesis §3.2).
 pub fn boom_dims_at(boom: &crate::crane::BoomData, x_m: f64) -> OctagonDims {
     if x_m <= boom.foot_to_g_m {
-        boom.section_at_foot.lerp(&boom.section_at_g, (x_m / boom.foot_to_g_m).clamp(0.0, 1.0))
+        boom.section_at_foot
+            .lerp(&boom.section_at_g, (x_m / boom.foot_to_g_m).clamp(0.0, 1.0))
     } else {
         let s = ((x_m - boom.foot_to_g_m) / boom.g_to_tip_m).clamp(0.0, 1.0);
         boom.section_at_g.lerp(&boom.section_at_tip, s)

@@ -52,7 +52,12 @@ pub struct Maneuver {
 
 impl Maneuver {
     /// A thesis maneuver: 30 s (t1 = 1.5, t2 = 28.5) or 10 s (t1 = 1, t2 = 9), 40°↔80°.
-    pub fn thesis(load_kg: f64, duration_s: f64, shape: RampShape, direction: Direction) -> Result<Self, ModelError> {
+    pub fn thesis(
+        load_kg: f64,
+        duration_s: f64,
+        shape: RampShape,
+        direction: Direction,
+    ) -> Result<Self, ModelError> {
         let ramp = if (duration_s - 30.0).abs() < 1e-9 {
             1.5
         } else if (duration_s - 10.0).abs() < 1e-9 {
@@ -61,7 +66,9 @@ impl Maneuver {
             return Err(ModelError::InvalidParameter("duration must be 30 or 10 s"));
         };
         if !(load_kg >= 0.0 && load_kg.is_finite()) {
-            return Err(ModelError::InvalidParameter("hook load must be a finite number ≥ 0 kg"));
+            return Err(ModelError::InvalidParameter(
+                "hook load must be a finite number ≥ 0 kg",
+            ));
         }
         Ok(Maneuver {
             load_kg,
@@ -92,7 +99,9 @@ impl Maneuver {
 
 /// The twelve thesis cases: (name, maneuver).
 pub fn thesis_cases() -> [(&'static str, Maneuver); 12] {
-    let m = |w: f64, d: f64, s: RampShape, dir: Direction| Maneuver::thesis(w, d, s, dir).unwrap_or_else(|_| unreachable_maneuver());
+    let m = |w: f64, d: f64, s: RampShape, dir: Direction| {
+        Maneuver::thesis(w, d, s, dir).unwrap_or_else(|_| unreachable_maneuver())
+    };
     use Direction::{Down, Up};
     use RampShape::{Cycloidal, Linear};
     [
@@ -103,17 +112,33 @@ pub fn thesis_cases() -> [(&'static str, Maneuver); 12] {
         ("3300kg-30s-linear-up", m(3300.0, 30.0, Linear, Up)),
         ("3300kg-30s-linear-down", m(3300.0, 30.0, Linear, Down)),
         ("3300kg-30s-cycloidal-up", m(3300.0, 30.0, Cycloidal, Up)),
-        ("3300kg-30s-cycloidal-down", m(3300.0, 30.0, Cycloidal, Down)),
+        (
+            "3300kg-30s-cycloidal-down",
+            m(3300.0, 30.0, Cycloidal, Down),
+        ),
         ("3300kg-10s-linear-up", m(3300.0, 10.0, Linear, Up)),
         ("3300kg-10s-linear-down", m(3300.0, 10.0, Linear, Down)),
         ("3300kg-10s-cycloidal-up", m(3300.0, 10.0, Cycloidal, Up)),
-        ("3300kg-10s-cycloidal-down", m(3300.0, 10.0, Cycloidal, Down)),
+        (
+            "3300kg-10s-cycloidal-down",
+            m(3300.0, 10.0, Cycloidal, Down),
+        ),
     ]
 }
 
 fn unreachable_maneuver() -> Maneuver {
     // Only reached if `Maneuver::thesis` rejected the fixed thesis values above.
-    Maneuver { load_kg: 0.0, shape: RampShape::Cycloidal, direction: Direction::Up, t1_s: 1.5, t2_s: 28.5, t3_s: 30.0, low_angle_deg: 40.0, high_angle_deg: 80.0, settle_s: 0.3 }
+    Maneuver {
+        load_kg: 0.0,
+        shape: RampShape::Cycloidal,
+        direction: Direction::Up,
+        t1_s: 1.5,
+        t2_s: 28.5,
+        t3_s: 30.0,
+        low_angle_deg: 40.0,
+        high_angle_deg: 80.0,
+        settle_s: 0.3,
+    }
 }
 
 /// Integration settings.
@@ -133,7 +158,12 @@ impl SimulationOptions {
     /// The defaults: h = 2 ms, a sample every 5 steps (100 Hz), starting at equilibrium.
     pub fn for_type<T: Real>() -> Self {
         let f32_like = T::default_epsilon().to_f64() > 1e-10;
-        SimulationOptions { step_s: 2e-3, output_every: 5, tolerance: if f32_like { 1e-5 } else { 1e-10 }, initial: InitialState::Equilibrium }
+        SimulationOptions {
+            step_s: 2e-3,
+            output_every: 5,
+            tolerance: if f32_like { 1e-5 } else { 1e-10 },
+            initial: InitialState::Equilibrium,
+        }
     }
 }
 
@@ -191,7 +221,9 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         mut on_sample: impl FnMut(&Sample<T>) -> bool,
     ) -> Result<RunSummary<T>, ModelError> {
         if !(options.step_s > 0.0 && options.step_s <= 0.1 && options.output_every >= 1) {
-            return Err(ModelError::InvalidParameter("step must be in (0, 0.1] s and output_every ≥ 1"));
+            return Err(ModelError::InvalidParameter(
+                "step must be in (0, 0.1] s and output_every ≥ 1",
+            ));
         }
         let stroke = self.stroke(maneuver);
         let load = T::lit(maneuver.load_kg);
@@ -201,7 +233,11 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
             InitialState::Equilibrium => self.equilibrium_state(start, load)?,
         };
         let (mut state, ev) = State::new(self, T::zero(), stroke.at(T::zero()), load, free)?;
-        let mut summary = RunSummary { steps: 0, evaluations: 1, max_constraint_violation: T::zero() };
+        let mut summary = RunSummary {
+            steps: 0,
+            evaluations: 1,
+            max_constraint_violation: T::zero(),
+        };
         let first = self.sample(&ev, T::zero(), 0)?;
         summary.max_constraint_violation = first.constraint_violation;
         if !on_sample(&first) {
@@ -221,7 +257,8 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
                 let ev = self.evaluate(act, load, &state.free)?;
                 summary.evaluations += 1;
                 let s = self.sample(&ev, t, stats.iterations)?;
-                summary.max_constraint_violation = summary.max_constraint_violation.max(s.constraint_violation);
+                summary.max_constraint_violation =
+                    summary.max_constraint_violation.max(s.constraint_violation);
                 if !on_sample(&s) {
                     break;
                 }
@@ -231,7 +268,12 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
     }
 
     /// The outputs at an evaluated state.
-    pub fn sample(&self, ev: &crate::dynamics::Evaluation<T, M>, t_s: T, iterations: usize) -> Result<Sample<T>, ModelError> {
+    pub fn sample(
+        &self,
+        ev: &crate::dynamics::Evaluation<T, M>,
+        t_s: T,
+        iterations: usize,
+    ) -> Result<Sample<T>, ModelError> {
         let (sys, lambda) = self.multipliers(ev)?;
         let mut deflection_m = [T::zero(); 3];
         for (s, d) in deflection_m.iter_mut().enumerate() {

@@ -40,15 +40,25 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
     /// equilibrium (by 4 % in the longitudinal mode at 3.3 t), which starts an
     /// 84 Hz oscillation of the piston force that no crane shows. Kept to
     /// reproduce the listing; [`Self::equilibrium_state`] is the default.
-    pub fn listing_initial_state(&self, boom_angle_rad: T, load_kg: T) -> Result<FreeCoordinates<T, M>, ModelError> {
-        let g_body = rotation(boom_angle_rad).transpose() * Vector2::new(T::zero(), -self.gravity_m_s2);
+    pub fn listing_initial_state(
+        &self,
+        boom_angle_rad: T,
+        load_kg: T,
+    ) -> Result<FreeCoordinates<T, M>, ModelError> {
+        let g_body =
+            rotation(boom_angle_rad).transpose() * Vector2::new(T::zero(), -self.gravity_m_s2);
         let tip = self.tip_weight_body(boom_angle_rad, load_kg)?;
         let mut eta = [T::zero(); M];
         for (k, e) in eta.iter_mut().enumerate() {
             let (sg, st) = (&self.modes.static_gravity[k], &self.modes.static_tip[k]);
             *e = sg[0] * g_body.x + sg[1] * g_body.y + st[0] * tip.x + st[1] * tip.y;
         }
-        Ok(FreeCoordinates { eta, eta_rate: [T::zero(); M], swing_rad: hanging(), swing_rate: T::zero() })
+        Ok(FreeCoordinates {
+            eta,
+            eta_rate: [T::zero(); M],
+            swing_rad: hanging(),
+            swing_rate: T::zero(),
+        })
     }
 
     /// The thesis's initial state (SPEC §3) with the projection done in the energy
@@ -56,8 +66,13 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
     /// and load at C, projected on the modes by least squares in ‖·‖_K, which is
     /// η = (χᵀKχ)⁻¹χᵀKα = diag(ω⁻²)·χᵀf: exactly the reduced model's static
     /// equilibrium, diag(ω²)·η = Dᵀ·Tᵀ·g + χ_Cᵀ·Tᵀ·(m5·g). Rope hanging, nothing moving.
-    pub fn equilibrium_state(&self, boom_angle_rad: T, load_kg: T) -> Result<FreeCoordinates<T, M>, ModelError> {
-        let g_body = rotation(boom_angle_rad).transpose() * Vector2::new(T::zero(), -self.gravity_m_s2);
+    pub fn equilibrium_state(
+        &self,
+        boom_angle_rad: T,
+        load_kg: T,
+    ) -> Result<FreeCoordinates<T, M>, ModelError> {
+        let g_body =
+            rotation(boom_angle_rad).transpose() * Vector2::new(T::zero(), -self.gravity_m_s2);
         let tip = self.tip_weight_body(boom_angle_rad, load_kg)?;
         let d = SMatrix::<T, 2, M>::from_fn(|r, c| self.modes.first_moment_modes[r][c]);
         let tip_modes = SMatrix::<T, 2, M>::from_fn(|r, c| self.modes.tip_modes[r][c]);
@@ -67,7 +82,12 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
             let w = self.modes.omega_rad_s[k];
             *e = f[k] / (w * w);
         }
-        Ok(FreeCoordinates { eta, eta_rate: [T::zero(); M], swing_rad: hanging(), swing_rate: T::zero() })
+        Ok(FreeCoordinates {
+            eta,
+            eta_rate: [T::zero(); M],
+            swing_rad: hanging(),
+            swing_rate: T::zero(),
+        })
     }
 }
 

@@ -130,36 +130,110 @@ fn smallest_positive_root<T: Real>(a: T, b: T, c: T) -> Option<T> {
     best
 }
 
-impl<T: Real, const M: usize> HookLoadModel<T> for CraneModel<T, M> {
-    /// Secant through W = 0 and the rated load (W_tip/1.5) of the at-rest piston
-    /// force, with the boom deflected statically for each load: exact at both
-    /// points, within a fraction of a per mille between them.
-    fn piston_force_n(&self, boom: BoomState<T>) -> Result<Affine<T>, ModelError> {
-        let tip = self.tipping_load_at_rest(boom.angle_rad)?;
-        let w_ref = (tip.tipping_load_kg / T::lit(SAFETY_FACTOR)).min(T::lit(20_000.0)).max(T::lit(100.0));
-        let at = |w: T| -> Result<T, ModelError> {
+/// Piston force and F_A at rest as exact quadratics in W, from three evaluations.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LoadResponses<T> {
+    /// Piston force (N) as an affine map: secant through W = 0 and the rated load.
+    pub piston_force: Affine<T>,
+    /// F_A (N) as an affine map: secant through W = 0 and the tipping load, so its
+    /// root is the exact quasi-static tipping load.
+    pub jack_reaction: Affine<T>,
+    /// The quasi-static tipping load (kg); `T::max_value()` if the crane cannot tip.
+    pub tipping_load_kg: T,
+}
+
+impl<T: Real, const M: usize> CraneModel<T, M> {
+    /// What the limiter needs at a boom state, from three evaluations of the
+    /// multipliers at W = 0, W1 and 2·W1 with the boom at its static deflection for
+    /// each load: F_A(W) and F(W) are exact quadratics there (the sag grows with W),
+    /// so the tipping load is the root of F_A's, and the affine maps returned are
+    /// their secants through W = 0 and the tipping (resp. rated) load — exact at
+    /// those points, which is where the limiter decides.
+    pub fn load_responses(&self, boom: BoomState<T>) -> Result<LoadResponses<T>, ModelError> {
+        let w1 = T::lit(5000.0);
+        let two = T::lit(2.0);
+        let at = |w: T| -> Result<Reactions<T>, ModelError> {
             let free = self.equilibrium_state(boom.angle_rad, w)?;
-            Ok(self.quasi_static_reactions(boom, w, &free)?.piston_force_n)
+            self.quasi_static_reactions(boom, w, &free)
         };
-        let (f0, f1) = (at(T::zero())?, at(w_ref)?);
-        Ok(Affine { at_zero: f0, per_kg: (f1 - f0) / w_ref })
+        let (r0, r1, r2) = (at(T::zero())?, at(w1)?, at(w1 + w1)?);
+        let quad = |f0: T, f1: T, f2: T| {
+            let c = (f2 - two * f1 + f0) / (two * w1 * w1);
+            (f0, (f1 - f0) / w1 - c * w1, c)
+        };
+        let (fa, fb, fc) = quad(r0.jack_reaction_n, r1.jack_reaction_n, r2.jack_reaction_n);
+        let (pa, pb, pc) = quad(r0.piston_force_n, r1.piston_force_n, r2.piston_force_n);
+        let huge = T::max_value().unwrap_or_else(T::one);
+        let tipping = smallest_positive_root(fa, fb, fc).unwrap_or(huge);
+        let jack_reaction = if tipping < T::lit(1e9) {
+            Affine { at_zero: fa, per_kg: -fa / tipping }
+        } else {
+            Affine { at_zero: fa, per_kg: fb }
+        };
+        let w_ref = (tipping / T::lit(SAFETY_FACTOR)).min(T::lit(20_000.0)).max(T::lit(100.0));
+        let piston_force = Affine { at_zero: pa, per_kg: pb + pc * w_ref };
+        Ok(LoadResponses { piston_force, jack_reaction, tipping_load_kg: tipping })
+    }
+}
+
+impl<T: Real, const M: usize> HookLoadModel<T> for CraneModel<T, M> {
+    /// See [`CraneModel::load_responses`].
+    fn piston_force_n(&self, boom: BoomState<T>) -> Result<Affine<T>, ModelError> {
+        Ok(self.load_responses(boom)?.piston_force)
     }
 
-    /// Secant through W = 0 and the exact tipping load: so −at_zero/per_kg is the
-    /// quasi-static tipping load itself.
+    /// See [`CraneModel::load_responses`].
     fn jack_reaction_n(&self, boom: BoomState<T>) -> Result<Affine<T>, ModelError> {
-        let tip = self.tipping_load_at_rest(boom.angle_rad)?;
-        let free = self.equilibrium_state(boom.angle_rad, T::zero())?;
-        let f0 = self.quasi_static_reactions(boom, T::zero(), &free)?.jack_reaction_n;
-        if tip.tipping_load_kg < T::lit(1e9) {
-            Ok(Affine { at_zero: f0, per_kg: -f0 / tip.tipping_load_kg })
-        } else {
-            let (_, fa) = self.affine_at(boom, &free)?;
-            Ok(Affine { at_zero: f0, per_kg: fa.per_kg })
-        }
+        Ok(self.load_responses(boom)?.jack_reaction)
     }
 
     fn radius_m(&self, boom_angle_rad: T) -> T {
         T::lit(self.crane.boom.length_m()) * boom_angle_rad.cos() - T::lit(self.crane.chassis.radius_offset_m)
+    }
+}
+
+/// The crane model with a one-entry cache, for the limiter: it asks for the piston
+/// force and the jack reaction at the same boom state every cycle, and both come
+/// from the same three evaluations.
+#[derive(Debug, Clone)]
+pub struct CachedLoadModel<T: Real, const M: usize> {
+    model: CraneModel<T, M>,
+    last: core::cell::Cell<Option<(BoomState<T>, LoadResponses<T>)>>,
+}
+
+impl<T: Real, const M: usize> CachedLoadModel<T, M> {
+    /// Wraps a model.
+    pub fn new(model: CraneModel<T, M>) -> Self {
+        CachedLoadModel { model, last: core::cell::Cell::new(None) }
+    }
+
+    /// The wrapped model.
+    pub fn model(&self) -> &CraneModel<T, M> {
+        &self.model
+    }
+
+    fn responses(&self, boom: BoomState<T>) -> Result<LoadResponses<T>, ModelError> {
+        if let Some((b, r)) = self.last.get() {
+            if b == boom {
+                return Ok(r);
+            }
+        }
+        let r = self.model.load_responses(boom)?;
+        self.last.set(Some((boom, r)));
+        Ok(r)
+    }
+}
+
+impl<T: Real, const M: usize> HookLoadModel<T> for CachedLoadModel<T, M> {
+    fn piston_force_n(&self, boom: BoomState<T>) -> Result<Affine<T>, ModelError> {
+        Ok(self.responses(boom)?.piston_force)
+    }
+
+    fn jack_reaction_n(&self, boom: BoomState<T>) -> Result<Affine<T>, ModelError> {
+        Ok(self.responses(boom)?.jack_reaction)
+    }
+
+    fn radius_m(&self, boom_angle_rad: T) -> T {
+        self.model.radius_m(boom_angle_rad)
     }
 }

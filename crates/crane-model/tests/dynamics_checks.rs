@@ -670,7 +670,6 @@ fn f32_model_built_in_f32_matches_f64_over_the_30_s_maneuver() {
 /// |Δa| ≤ tol·(max|a| + 1) of State::step needs tol ≳ 3e-4 to be reachable
 /// (1e-4 still fails at t = 1.13 s with 3300 kg, at 24.5 s unloaded).
 #[test]
-#[ignore = "model bug: SimulationOptions::for_type::<f32>() tolerance 1e-5 is below the f32 residual floor (~1e-4); State::step returns NoConvergence on the first step"]
 fn f32_simulation_with_default_options_runs_the_30_s_maneuver() {
     let m32 =
         CraneModel::<f32, 4>::new(&CraneData::coles_mobile_930(), model().modes.cast::<f32>());

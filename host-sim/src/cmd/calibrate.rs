@@ -21,7 +21,7 @@ use moment_limiter::calibration::CalibrationLearner;
 use moment_limiter::limiter::{Limiter, LimiterConfig};
 use moment_limiter::log_format::LogParser;
 
-use super::replay::{crane_load_model, read_line, CalibrationFile};
+use super::replay::{read_line, CalibrationFile};
 
 /// Arguments of `crane-sim calibrate`.
 #[derive(clap::Args, Debug)]
@@ -43,7 +43,7 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
     for path in &args.logs {
         let name = path.display();
         let file = File::open(path).with_context(|| format!("cannot open log {name}"))?;
-        let mut limiter = Limiter::new(crane_load_model(), LimiterConfig::standard())
+        let mut limiter = Limiter::new(crate::model::thesis_model()?, LimiterConfig::standard())
             .map_err(|e| anyhow::anyhow!("{e}"))?;
         let mut parser = LogParser::<f64>::new();
         let mut reader = BufReader::new(file);

@@ -1,7 +1,7 @@
 //! `crane-sim replay LOG.csv [--calibration CAL.json] [--json] [--trace FILE.csv]`
 //!
 //! Runs a recorded sensor log (SPEC §5) through the limiter core, the same
-//! `moment_limiter::replay::Replay` the firmware runs, in `f64`, and prints
+//! `moment_limiter::replay::Replay` the firmware runs, in `f32`, and prints
 //! with the same formatters, so the output is the firmware's.
 //!
 //! Output: without `--json`, one timeline line per state change as it happens
@@ -29,7 +29,6 @@ use moment_limiter::limiter::{Limiter, LimiterConfig};
 use moment_limiter::load_estimate::Calibration;
 use moment_limiter::log_format::{LogError, LogErrorKind, LogParser};
 use moment_limiter::replay::{self, Replay, ReplayEvent};
-use moment_limiter::rigid_reference::RigidCrane;
 use serde::{Deserialize, Serialize};
 
 /// Arguments of `crane-sim replay`.
@@ -50,9 +49,12 @@ pub struct ReplayArgs {
 
 /// The crane model the host tools (replay, calibrate) run the limiter on.
 /// The single place to change it.
-pub fn crane_load_model() -> impl HookLoadModel<f64> {
-    // TODO(lead): real model. This is the rigid quasi-static stand-in.
-    RigidCrane::coles_930()
+///
+/// It is the controller's model, in `f32` with the same precomputed modal
+/// constants the firmware is built with, so `crane-sim replay` and the firmware
+/// run the same arithmetic and their timelines agree sample for sample.
+pub fn crane_load_model() -> impl HookLoadModel<f32> {
+    crane_model::thesis_modes::thesis_load_model_f32()
 }
 
 /// The calibration file (`CAL.json`). The six values of
@@ -91,20 +93,20 @@ pub struct CalibrationFile {
 
 impl CalibrationFile {
     /// The limiter's calibration.
-    pub fn calibration(&self) -> Calibration<f64> {
+    pub fn calibration<T: crane_model::Real>(&self) -> Calibration<T> {
         Calibration {
-            friction_up_n: self.friction_up_n,
-            friction_down_n: self.friction_down_n,
-            force_offset_n: self.force_offset_n,
-            p1_offset_bar: self.p1_offset_bar,
-            p2_offset_bar: self.p2_offset_bar,
-            angle_offset_deg: self.angle_offset_deg,
+            friction_up_n: T::lit(self.friction_up_n),
+            friction_down_n: T::lit(self.friction_down_n),
+            force_offset_n: T::lit(self.force_offset_n),
+            p1_offset_bar: T::lit(self.p1_offset_bar),
+            p2_offset_bar: T::lit(self.p2_offset_bar),
+            angle_offset_deg: T::lit(self.angle_offset_deg),
         }
     }
 }
 
 /// Reads and checks a calibration file.
-pub fn load_calibration(path: &Path) -> anyhow::Result<Calibration<f64>> {
+pub fn load_calibration<T: crane_model::Real>(path: &Path) -> anyhow::Result<Calibration<T>> {
     let text = std::fs::read_to_string(path)
         .with_context(|| format!("cannot read calibration {}", path.display()))?;
     let file: CalibrationFile = serde_json::from_str(&text)
@@ -161,8 +163,8 @@ pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
     };
 
     let mut replay = Replay::new(limiter);
-    let mut parser = LogParser::<f64>::new();
-    let mut events: Vec<ReplayEvent<f64>> = Vec::new();
+    let mut parser = LogParser::<f32>::new();
+    let mut events: Vec<ReplayEvent<f32>> = Vec::new();
     let mut reader = BufReader::new(file);
     let mut buf = Vec::new();
     let stdout = std::io::stdout();

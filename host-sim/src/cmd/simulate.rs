@@ -42,37 +42,37 @@ pub enum InitialArg {
 pub struct SimulateArgs {
     /// A thesis case by name (see --list); overrides the four flags below.
     #[arg(long)]
-    case: Option<String>,
+    pub case: Option<String>,
     /// List the twelve thesis cases and exit.
     #[arg(long)]
-    list: bool,
+    pub list: bool,
     /// Hook load W (kg).
     #[arg(long, default_value_t = 3300.0)]
-    load_kg: f64,
+    pub load_kg: f64,
     /// Duration of the motion: 30 or 10 (s).
     #[arg(long, default_value_t = 30.0)]
-    duration: f64,
+    pub duration: f64,
     /// Velocity profile of the piston.
     #[arg(long, value_enum, default_value = "cycloidal")]
-    profile: ProfileArg,
+    pub profile: ProfileArg,
     /// Boom up (40° → 80°) or down (80° → 40°).
     #[arg(long, value_enum, default_value = "up")]
-    direction: DirectionArg,
+    pub direction: DirectionArg,
     /// Time step (ms).
     #[arg(long, default_value_t = 2.0)]
-    step_ms: f64,
+    pub step_ms: f64,
     /// Output every this many steps.
     #[arg(long, default_value_t = 5)]
-    output_every: usize,
+    pub output_every: usize,
     /// How the run starts.
     #[arg(long, value_enum, default_value = "equilibrium")]
-    initial: InitialArg,
+    pub initial: InitialArg,
     /// Write the samples as CSV.
     #[arg(long)]
-    out: Option<PathBuf>,
+    pub out: Option<PathBuf>,
     /// Draw piston force and deflections against boom angle (SVG).
     #[arg(long)]
-    plot: Option<PathBuf>,
+    pub plot: Option<PathBuf>,
 }
 
 /// The CSV header (SPEC §5 columns first).
@@ -95,7 +95,7 @@ pub fn csv_row(s: &Sample<f64>) -> String {
 }
 
 /// Resolves the maneuver from the arguments.
-fn maneuver(args: &SimulateArgs) -> Result<(String, Maneuver)> {
+pub fn maneuver(args: &SimulateArgs) -> Result<(String, Maneuver)> {
     if let Some(name) = &args.case {
         return thesis_cases()
             .into_iter()

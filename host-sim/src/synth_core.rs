@@ -1,0 +1,194 @@
+//! The sensor model behind `crane-sim synth`, as a function: simulated samples of
+//! a maneuver in, recorded-style log rows out, each with the simulated truth it
+//! was made from.
+//!
+//! `crane-sim synth` writes these rows to a file; the acceptance tests
+//! (`host-sim/tests/limiter_acceptance.rs`, which includes this file with
+//! `#[path]`) feed them to the limiter in-process, so both see the very same
+//! log. This file depends only on `crane_model` and `moment_limiter`.
+//!
+//! What the limiter's sensors would have recorded on the crane: the simulated
+//! piston force plus cylinder friction (higher going up than coming down, the
+//! hysteresis of the thesis's measured traces, Figs. 4.2–4.3), split into p1 and
+//! p2 by eq. 4.1 with a small rod-side back pressure, transducer noise and the
+//! 12-bit quantization of the 4–20 mA front end; the boom angle through an
+//! oil-damped pendulum potentiometer (second-order lag) with noise and
+//! quantization; and the true hook load as the last column.
+
+use crane_model::multibody::ThesisModel;
+use crane_model::simulation::{Maneuver, Sample, SimulationOptions};
+use moment_limiter::conversion::SensorConversion;
+use moment_limiter::fault_injector::Rng;
+use moment_limiter::piston_force::p1_bar_for_force;
+
+/// Header line of a synthesized log (SPEC §5 columns and the true load).
+pub const LOG_HEADER: &str = "t_s,p1_bar,p2_bar,boom_angle_deg,true_load_kg";
+
+/// The recording chain: friction, transducers, pendulum, noise.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SensorModel {
+    /// Seed of the noise.
+    pub seed: u32,
+    /// Cylinder friction while raising (N): the piston force reads higher.
+    pub friction_up_n: f64,
+    /// Cylinder friction while lowering (N): the piston force reads lower.
+    pub friction_down_n: f64,
+    /// Standard deviation of the pressure noise (bar).
+    pub noise_bar: f64,
+    /// Standard deviation of the angle noise (deg).
+    pub noise_deg: f64,
+    /// Natural frequency of the pendulum potentiometer (Hz).
+    pub pendulum_hz: f64,
+    /// Damping ratio of the pendulum potentiometer (oil).
+    pub pendulum_damping: f64,
+    /// Back pressure on the rod side (bar).
+    pub rod_side_bar: f64,
+    /// Break the p1 loop (0 mA, reads −50 bar) from this time on (s).
+    pub open_p1_at_s: Option<f64>,
+}
+
+impl SensorModel {
+    /// The defaults of `crane-sim synth`: 12 kN up / 8 kN down, 0.3 bar,
+    /// 0.03°, 2 Hz ζ = 0.7 pendulum, 4 bar back pressure, seed 1.
+    pub fn standard() -> Self {
+        Self {
+            seed: 1,
+            friction_up_n: 12_000.0,
+            friction_down_n: 8_000.0,
+            noise_bar: 0.3,
+            noise_deg: 0.03,
+            pendulum_hz: 2.0,
+            pendulum_damping: 0.7,
+            rod_side_bar: 4.0,
+            open_p1_at_s: None,
+        }
+    }
+}
+
+/// One row of a synthesized log and the truth behind it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SynthRow {
+    /// Time in the log (s).
+    pub t_s: f64,
+    /// Recorded p1 (bar, quantized).
+    pub p1_bar: f64,
+    /// Recorded p2 (bar, quantized).
+    pub p2_bar: f64,
+    /// Recorded pendulum angle (deg, quantized).
+    pub boom_angle_deg: f64,
+    /// True hook load (kg).
+    pub true_load_kg: f64,
+    /// The simulated sample this row was made from (true angle, piston force, F_A).
+    pub truth: Sample<f64>,
+    /// True boom rate (deg/s, backward difference) that set the friction.
+    pub true_rate_deg_s: f64,
+}
+
+impl SynthRow {
+    /// The CSV line (no newline) `crane-sim synth` writes for this row.
+    pub fn csv_line(&self) -> String {
+        format!(
+            "{:.3},{:.3},{:.3},{:.3},{}",
+            self.t_s, self.p1_bar, self.p2_bar, self.boom_angle_deg, self.true_load_kg
+        )
+    }
+}
+
+/// Simulation options for a log sampled at `rate_hz`; returns them and the
+/// sample period (s), a whole number of 2 ms integration steps.
+pub fn options_for_rate(rate_hz: f64) -> (SimulationOptions, f64) {
+    let mut options = SimulationOptions::for_type::<f64>();
+    let every = (1.0 / (rate_hz * options.step_s)).round().max(1.0) as usize;
+    options.output_every = every;
+    (options, every as f64 * options.step_s)
+}
+
+/// Simulates `maneuver` and collects its samples.
+pub fn simulate(
+    model: &ThesisModel<f64>,
+    maneuver: &Maneuver,
+    options: &SimulationOptions,
+) -> Result<Vec<Sample<f64>>, crane_model::ModelError> {
+    let mut samples = Vec::new();
+    model.simulate(maneuver, options, |s| {
+        samples.push(*s);
+        true
+    })?;
+    Ok(samples)
+}
+
+/// Gaussian-like noise with unit standard deviation (sum of 12 uniforms − 6).
+fn gauss(rng: &mut Rng) -> f64 {
+    (0..12).map(|_| 0.5 * (rng.symmetric_unit() + 1.0)).sum::<f64>() - 6.0
+}
+
+/// The log rows of simulated `samples` (period `dt_s`), preceded by `hold_s`
+/// of standstill at the first sample, for hook load `load_kg`.
+pub fn synthesize(
+    samples: &[Sample<f64>],
+    dt_s: f64,
+    hold_s: f64,
+    load_kg: f64,
+    sensors: &SensorModel,
+) -> Vec<SynthRow> {
+    let conv = SensorConversion::<f64>::standard();
+    let mut rng = Rng::new(sensors.seed);
+    let wn = 2.0 * std::f64::consts::PI * sensors.pendulum_hz;
+    let (mut pend, mut pend_rate) = (
+        samples
+            .first()
+            .map(|s| s.boom_angle_rad.to_degrees())
+            .unwrap_or(0.0),
+        0.0,
+    );
+    let hold = (hold_s / dt_s).round() as usize;
+    let first = samples.first().copied();
+    let rows = first
+        .into_iter()
+        .cycle()
+        .take(hold)
+        .map(|s| (s, 0.0))
+        .chain(samples.iter().enumerate().map(|(i, s)| {
+            let prev = if i == 0 { s } else { &samples[i - 1] };
+            (*s, (s.boom_angle_rad - prev.boom_angle_rad).to_degrees() / dt_s)
+        }));
+    let mut out = Vec::with_capacity(hold + samples.len());
+    for (k, (s, rate_deg_s)) in rows.enumerate() {
+        let t = k as f64 * dt_s;
+        // Coulomb friction smoothed over ±0.2 °/s so standstill reads the true force.
+        let motion = (rate_deg_s / 0.2).tanh();
+        let friction = if motion >= 0.0 {
+            sensors.friction_up_n * motion
+        } else {
+            sensors.friction_down_n * motion
+        };
+        let force = s.reactions.piston_force_n + friction;
+        let p2 = sensors.rod_side_bar + sensors.noise_bar * gauss(&mut rng);
+        let p1 = p1_bar_for_force(force, sensors.rod_side_bar) + sensors.noise_bar * gauss(&mut rng);
+        let mut p1q = conv.raw_pressure_bar(&conv.p1, conv.counts_for_pressure(&conv.p1, p1));
+        if sensors.open_p1_at_s.is_some_and(|at| t >= at - 1e-9) {
+            p1q = conv.p1.bar(0.0);
+        }
+        let p2q = conv.raw_pressure_bar(&conv.p2, conv.counts_for_pressure(&conv.p2, p2));
+        // Pendulum potentiometer: x'' = ωn²(θ − x) − 2ζωn·x', 20 sub-steps per sample.
+        let truth = s.boom_angle_rad.to_degrees();
+        let sub = dt_s / 20.0;
+        for _ in 0..20 {
+            let acc = wn * wn * (truth - pend) - 2.0 * sensors.pendulum_damping * wn * pend_rate;
+            pend_rate += acc * sub;
+            pend += pend_rate * sub;
+        }
+        let angle = pend + sensors.noise_deg * gauss(&mut rng);
+        let angle_q = conv.angle.degrees(conv.angle.counts(angle));
+        out.push(SynthRow {
+            t_s: t,
+            p1_bar: p1q,
+            p2_bar: p2q,
+            boom_angle_deg: angle_q,
+            true_load_kg: load_kg,
+            truth: s,
+            true_rate_deg_s: rate_deg_s,
+        });
+    }
+    out
+}
