@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Every test of the project, from a fresh machine: installs what the tests need
+# (the thumbv7em-none-eabihf target, QEMU, ARM binutils), then runs the host
+# tests (model physics, limiter, drivers, CLI), clippy with warnings denied, the
+# board build of the firmware, and the QEMU-vs-host replay of every example log.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+bash scripts/install-test-deps.sh
+
+echo "== clippy (warnings denied)"
+cargo clippy --workspace --exclude firmware --all-targets -- -D warnings
+cargo clippy -p firmware --release --target thumbv7em-none-eabihf -- -D warnings
+cargo clippy -p firmware --release --target thumbv7em-none-eabihf --no-default-features --features board -- -D warnings
+
+echo "== firmware images (QEMU and board)"
+cargo build --release --target thumbv7em-none-eabihf -p firmware
+cargo build --release --target thumbv7em-none-eabihf -p firmware --no-default-features --features board
+
+echo "== tests (host, release: the model runs optimised; includes QEMU vs host replay)"
+cargo test --release --workspace --exclude firmware
