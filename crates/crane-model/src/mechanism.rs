@@ -27,6 +27,17 @@ pub struct BodyMotion<T: Real> {
     pub acceleration: Vector2<T>,
     /// Angular acceleration (rad/s²).
     pub angular_acceleration: T,
+    /// Unit vector along the body axis, (cos θ, sin θ), computed once: trigonometry
+    /// is the costliest arithmetic on the controller.
+    pub axis: Vector2<T>,
+}
+
+impl<T: Real> BodyMotion<T> {
+    /// Unit vector normal to the axis, (−sin θ, cos θ).
+    #[inline]
+    pub fn normal(&self) -> Vector2<T> {
+        Vector2::new(-self.axis.y, self.axis.x)
+    }
 }
 
 /// The mechanism's geometry, converted once to the model's float type.
@@ -42,6 +53,12 @@ pub struct MechanismGeometry<T: Real> {
     pub lug_angle_rad: T,
     /// Piston rod length BD (m).
     pub rod_length_m: T,
+    /// (cos γ, sin γ).
+    pub lug_rotation: Vector2<T>,
+    /// Direction angle of A0 − B0 (rad) and its unit vector.
+    pub base_angle_rad: T,
+    /// Unit vector of A0 − B0.
+    pub base_axis: Vector2<T>,
 }
 
 /// Unit vector at angle `a`.
@@ -74,15 +91,18 @@ pub struct MechanismMotion<T: Real> {
 impl<T: Real> MechanismGeometry<T> {
     /// From the crane data.
     pub fn new(crane: &crate::CraneData) -> Self {
+        let (dx, dy) = (crane.boom_foot[0] - crane.cylinder_foot[0], crane.boom_foot[1] - crane.cylinder_foot[1]);
+        let base = libm::atan2(dy, dx);
+        let gamma = crane.lug_angle_rad();
         MechanismGeometry {
             boom_foot: Vector2::new(T::lit(crane.boom_foot[0]), T::lit(crane.boom_foot[1])),
-            cylinder_foot: Vector2::new(
-                T::lit(crane.cylinder_foot[0]),
-                T::lit(crane.cylinder_foot[1]),
-            ),
+            cylinder_foot: Vector2::new(T::lit(crane.cylinder_foot[0]), T::lit(crane.cylinder_foot[1])),
             lug_length_m: T::lit(crane.lug_rod.length_m),
-            lug_angle_rad: T::lit(crane.lug_angle_rad()),
+            lug_angle_rad: T::lit(gamma),
             rod_length_m: T::lit(crane.piston_rod.length_m),
+            lug_rotation: Vector2::new(T::lit(libm::cos(gamma)), T::lit(libm::sin(gamma))),
+            base_angle_rad: T::lit(base),
+            base_axis: Vector2::new(T::lit(libm::cos(base)), T::lit(libm::sin(base))),
         }
     }
 
@@ -115,8 +135,13 @@ impl<T: Real> MechanismGeometry<T> {
         if !(ratio.abs() < T::one()) {
             return Err(ModelError::OutOfReach);
         }
-        let th2 = d.y.atan2(d.x) - ratio.acos();
-        let (e2, n2) = (unit(th2), normal(th2));
+        // θ2 = φ_d − α with cos α = ratio: e2 from the angle-difference formula, so
+        // the only trigonometric call is the acos that gives θ2's value.
+        let sin_alpha = (T::one() - ratio * ratio).sqrt();
+        let th2 = self.base_angle_rad - ratio.acos();
+        let (bc, bs) = (self.base_axis.x, self.base_axis.y);
+        let e2 = Vector2::new(bc * ratio + bs * sin_alpha, bs * ratio - bc * sin_alpha);
+        let n2 = Vector2::new(-e2.y, e2.x);
         // s·ṡ = L2·(d·n2)·θ̇2, differentiated once more for θ̈2.
         let g = l2 * d.dot(&n2);
         if !(g.abs() > T::default_epsilon()) {
@@ -130,7 +155,8 @@ impl<T: Real> MechanismGeometry<T> {
         let ad = (n2 * al2 - e2 * (w2 * w2)) * l2;
         let axis = pd - self.cylinder_foot;
         let th4 = axis.y.atan2(axis.x);
-        let (e4, n4) = (unit(th4), normal(th4));
+        let e4 = axis / s;
+        let n4 = Vector2::new(-e4.y, e4.x);
         let w4 = vd.dot(&n4) / s;
         let al4 = (ad.dot(&n4) - T::lit(2.0) * sd * w4) / s;
         let a = act.extension_m;
@@ -141,20 +167,24 @@ impl<T: Real> MechanismGeometry<T> {
             angular_velocity: w4,
             acceleration: e4 * (sdd - a * w4 * w4) + n4 * (T::lit(2.0) * sd * w4 + a * al4),
             angular_acceleration: al4,
+            axis: e4,
         };
-        let fixed = |position: Vector2<T>, angle: T, w: T, al: T| BodyMotion {
+        let fixed = |position: Vector2<T>, angle: T, w: T, al: T, axis: Vector2<T>| BodyMotion {
             position,
             angle,
             velocity: zero2,
             angular_velocity: w,
             acceleration: zero2,
             angular_acceleration: al,
+            axis,
         };
+        let (gc, gs) = (self.lug_rotation.x, self.lug_rotation.y);
+        let e1 = Vector2::new(e2.x * gc - e2.y * gs, e2.x * gs + e2.y * gc);
         Ok(MechanismMotion {
-            boom: fixed(self.boom_foot, th2 + self.lug_angle_rad, w2, al2),
-            lug: fixed(self.boom_foot, th2, w2, al2),
+            boom: fixed(self.boom_foot, th2 + self.lug_angle_rad, w2, al2, e1),
+            lug: fixed(self.boom_foot, th2, w2, al2, e2),
             rod,
-            cylinder: fixed(self.cylinder_foot, th4, w4, al4),
+            cylinder: fixed(self.cylinder_foot, th4, w4, al4, e4),
             actuator: act,
         })
     }

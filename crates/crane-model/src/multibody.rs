@@ -15,7 +15,7 @@
 use crate::bodies::{CylinderMass, Pendulum, RigidMass};
 use crate::crane::CraneData;
 use crate::dense::Square;
-use crate::mechanism::{normal, unit, MechanismGeometry, MechanismMotion};
+use crate::mechanism::{unit, MechanismGeometry, MechanismMotion};
 use crate::modal::{BoomModes, MeshRefinement, ModalAnalysis};
 use crate::profile::ActuatorMotion;
 use crate::{ModelError, Real};
@@ -88,7 +88,7 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         boom: &crate::mechanism::BodyMotion<T>,
         load_kg: T,
     ) -> Result<Pendulum<T>, ModelError> {
-        let (s, c) = (boom.angle.sin(), boom.angle.cos());
+        let (c, s) = (boom.axis.x, boom.axis.y);
         let (w, al) = (boom.angular_velocity, boom.angular_acceleration);
         let lc = self.modes.length_m;
         let l = boom.position.y + lc * s - self.load_clearance_m;
@@ -112,15 +112,16 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         let mech = self.geometry.motion(act)?;
         let pendulum = self.pendulum(&mech.boom, load_kg)?;
         let cylinder = self.cylinder.at_extension(act.extension_m)?;
-        let th1 = mech.boom.angle;
-        let rot = Matrix2::new(th1.cos(), -th1.sin(), th1.sin(), th1.cos());
-        Ok(RigidMotion {
-            mech,
-            pendulum,
-            cylinder,
-            rot,
-            load_kg,
-        })
+        let e1 = mech.boom.axis;
+        let rot = Matrix2::new(e1.x, -e1.y, e1.y, e1.x);
+        Ok(RigidMotion { mech, pendulum, cylinder, rot, load_kg })
+    }
+
+    /// The same rigid motion with another hook load (rope length unchanged).
+    pub fn with_load(&self, rigid: &RigidMotion<T>, load_kg: T) -> Result<RigidMotion<T>, ModelError> {
+        let p = &rigid.pendulum;
+        let pendulum = Pendulum::new(self.rope_kg_per_m, load_kg, p.length_m, p.length_rate_m_s, p.length_accel_m_s2)?;
+        Ok(RigidMotion { pendulum, load_kg, ..*rigid })
     }
 
     /// Stage 1b: every body's position and velocity given the free coordinates.
@@ -150,6 +151,7 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
             tip_position,
             tip_velocity,
             swing_rad: free.swing_rad,
+            swing_axis: unit(free.swing_rad),
             swing_rate: free.swing_rate,
             load_kg: rigid.load_kg,
         }
@@ -194,8 +196,8 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         }
         // Body 5 through the tip C: R̈5 = c5 + T·χ_C·η̈.
         let p = &cfg.pendulum;
-        let th5 = cfg.swing_rad;
-        let (e5, n5) = (unit(th5), normal(th5));
+        let e5 = cfg.swing_axis;
+        let n5 = Vector2::new(-e5.y, e5.x);
         let w5 = cfg.swing_rate;
         let tj_tip = cfg.rot * Vector2::new(-cfg.tip_body.y, cfg.tip_body.x);
         let tip_modes_world = cfg.rot * cfg.tip_modes;
@@ -308,7 +310,7 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
                 motion.velocity,
                 motion.angular_velocity,
             );
-            let (e, nrm) = (unit(motion.angle), normal(motion.angle));
+            let (e, nrm) = (motion.axis, motion.normal());
             sys.add_rigid_mass(
                 base,
                 mass.mass_kg,
@@ -325,7 +327,7 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         let base5 = 3 + M + 9;
         let p = &cfg.pendulum;
         let (th5, w5) = (cfg.swing_rad, cfg.swing_rate);
-        let (e5, n5) = (unit(th5), normal(th5));
+        let (e5, n5) = (cfg.swing_axis, Vector2::new(-cfg.swing_axis.y, cfg.swing_axis.x));
         sys.set_body(base5, cfg.tip_position, th5, cfg.tip_velocity, w5);
         sys.add_rigid_mass(base5, p.mass_kg, n5 * p.first_moment_kg_m, p.inertia_kg_m2);
         let f5 = g * p.mass_kg
@@ -373,9 +375,10 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
             sys.position[2] + lug_rot - sys.position[b2 + 2] - self.geometry.lug_angle_rad;
         // 8–9: revolute at D: R2 + L2·e2 − R3 − L3·e3 = 0 (eq. 3.32).
         let (l2, l3) = (self.geometry.lug_length_m, self.geometry.rod_length_m);
-        let (th2, th3) = (sys.position[b2 + 2], sys.position[b3 + 2]);
+        let th3 = sys.position[b3 + 2];
         let (w2, w3) = (sys.velocity[b2 + 2], sys.velocity[b3 + 2]);
-        let (e2, n2, e3, n3) = (unit(th2), normal(th2), unit(th3), normal(th3));
+        let mech = &cfg.mech;
+        let (e2, n2, e3, n3) = (mech.lug.axis, mech.lug.normal(), mech.rod.axis, mech.rod.normal());
         let phi_d = x(sys, b2) + e2 * l2 - x(sys, b3) - e3 * l3;
         let gam_d = e2 * (l2 * w2 * w2) - e3 * (l3 * w3 * w3);
         for i in 0..2 {
@@ -391,7 +394,7 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         // 14: prescribed motion, relative: e4·(R3 − R4) − a(t) = 0 (eq. 3.49, SPEC §2).
         let th4 = sys.position[b4 + 2];
         let w4 = sys.velocity[b4 + 2];
-        let (e4, n4) = (unit(th4), normal(th4));
+        let (e4, n4) = (cfg.mech.cylinder.axis, cfg.mech.cylinder.normal());
         let dr = x(sys, b3) - x(sys, b4);
         let dv = v(sys, b3) - v(sys, b4);
         for i in 0..2 {
@@ -516,6 +519,8 @@ pub struct Configuration<T: Real, const M: usize> {
     pub tip_velocity: Vector2<T>,
     /// θ5 (rad).
     pub swing_rad: T,
+    /// (cos θ5, sin θ5).
+    pub swing_axis: Vector2<T>,
     /// dθ5/dt (rad/s).
     pub swing_rate: T,
     /// Hook load W (kg).

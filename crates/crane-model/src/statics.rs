@@ -61,6 +61,26 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         })
     }
 
+    /// [`Self::equilibrium_state`] for an already computed rigid motion (no trigonometry).
+    pub fn equilibrium_state_at(&self, rigid: &crate::multibody::RigidMotion<T>) -> FreeCoordinates<T, M> {
+        let g = Vector2::new(T::zero(), -self.gravity_m_s2);
+        let g_body = rigid.rot.transpose() * g;
+        let tip = rigid.rot.transpose() * g * rigid.pendulum.mass_kg;
+        self.equilibrium_from_body_loads(g_body, tip)
+    }
+
+    fn equilibrium_from_body_loads(&self, g_body: Vector2<T>, tip: Vector2<T>) -> FreeCoordinates<T, M> {
+        let d = SMatrix::<T, 2, M>::from_fn(|r, c| self.modes.first_moment_modes[r][c]);
+        let tip_modes = SMatrix::<T, 2, M>::from_fn(|r, c| self.modes.tip_modes[r][c]);
+        let f: SVector<T, M> = d.transpose() * g_body + tip_modes.transpose() * tip;
+        let mut eta = [T::zero(); M];
+        for (k, e) in eta.iter_mut().enumerate() {
+            let w = self.modes.omega_rad_s[k];
+            *e = f[k] / (w * w);
+        }
+        FreeCoordinates { eta, eta_rate: [T::zero(); M], swing_rad: hanging(), swing_rate: T::zero() }
+    }
+
     /// The thesis's initial state (SPEC §3) with the projection done in the energy
     /// norm: the static deflection α under the boom's weight and the weight of rope
     /// and load at C, projected on the modes by least squares in ‖·‖_K, which is

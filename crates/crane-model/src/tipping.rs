@@ -152,9 +152,17 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
     pub fn load_responses(&self, boom: BoomState<T>) -> Result<LoadResponses<T>, ModelError> {
         let w1 = T::lit(5000.0);
         let two = T::lit(2.0);
+        // The mechanism is the same for every load: compute it (and its
+        // trigonometry) once, then only the pendulum's masses change.
+        let rigid0 = self.rigid_motion(self.actuator_at(boom.angle_rad, boom.rate_rad_s), T::zero())?;
         let at = |w: T| -> Result<Reactions<T>, ModelError> {
-            let free = self.equilibrium_state(boom.angle_rad, w)?;
-            self.quasi_static_reactions(boom, w, &free)
+            let rigid = self.with_load(&rigid0, w)?;
+            let free = self.equilibrium_state_at(&rigid);
+            let mut ev = self.evaluate_at(&rigid, &free)?;
+            ev.eta_accel = SVector::zeros();
+            ev.swing_accel = T::zero();
+            let (_, lambda) = self.multipliers(&ev)?;
+            Ok(self.reactions(&lambda))
         };
         let (r0, r1, r2) = (at(T::zero())?, at(w1)?, at(w1 + w1)?);
         let quad = |f0: T, f1: T, f2: T| {
