@@ -1,12 +1,31 @@
 //! Learning the friction correction from unloaded runs (`crane-sim calibrate`).
 //!
 //! With no hook load the model gives the piston force F_model(0) at every
-//! boom state, so each moving sample of an unloaded log gives a residual
-//! r = F_meas − F_model(0) = force_offset + friction(direction). The learner
-//! averages r over the samples moving up (r_up) and moving down (r_down),
-//! using the very same signal chain as the limiter (feed it the
+//! boom state, so each sample of an unloaded log in **steady motion** gives a
+//! residual r = F_meas − F_model(0) = force_offset + friction(direction). The
+//! learner averages r over the steady samples moving up (r_up) and down
+//! (r_down), using the very same signal chain as the limiter (feed it the
 //! [`Measurement`]s of a [`crate::limiter::Limiter`] run with
 //! [`Calibration::none`]).
+//!
+//! Only steady motion ([`SteadyMotion`]): the model is quasi-static, so in the
+//! acceleration and deceleration ramps the measured force also carries the
+//! inertia of the boom (unloaded, 10 s move: the piston force drops from 34 kN
+//! to 2.5 kN when lowering starts at 80° and overshoots 128 kN by 27 kN when it
+//! stops at 40°), and near standstill the friction is not yet (or no longer)
+//! fully developed. Counting those samples as "moving" made the learned
+//! residuals +9.2 kN / −6.1 kN where the logs carried +12 / −8 kN. A sample is
+//! steady when the boom has moved in one direction for at least
+//! `min_moving_s` (the filters and the boom's oscillation after the ramp have
+//! settled), at least `min_rate_deg_s`, with |filtered acceleration| at most
+//! `max_accel_deg_s2`, **and stays so for `lookahead_s` after it**: the
+//! acceleration is derived from the filtered angle, so a deceleration shows in
+//! it ≈ 0.75 s after it shows in the force (pendulum 0.11 s + angle filter
+//! 0.11 s + two 1 Hz stages on rate and acceleration); the learner holds the
+//! last `lookahead_s` of residuals back and drops them when the motion turns
+//! out not to have been steady. (The learner runs on recorded logs, after the
+//! fact, so it can afford to look ahead; the limiter cannot and does not need
+//! to.)
 //!
 //! A constant zero offset and a per-direction friction cannot be told apart
 //! from these two numbers, and the limiter does not need them apart: it
@@ -51,9 +70,54 @@ impl core::fmt::Display for CalibrationError {
     }
 }
 
-/// Running sums of the residual per direction.
+/// Which samples count as steady motion (see the module doc).
 #[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SteadyMotion<T> {
+    /// Least time moving in one direction (s).
+    pub min_moving_s: T,
+    /// Least |rate| (°/s).
+    pub min_rate_deg_s: T,
+    /// Largest |acceleration| (°/s²).
+    pub max_accel_deg_s2: T,
+    /// Time the motion must stay steady after a sample for it to count (s).
+    pub lookahead_s: T,
+}
+
+impl<T: Real> SteadyMotion<T> {
+    /// Defaults: moving for 1.5 s (the thesis's longest ramp, plus the rate
+    /// filter's delay), |rate| ≥ 0.5 °/s (the slowest thesis maneuver runs at
+    /// 1.4 °/s), |acceleration| ≤ 0.5 °/s² (the ramps reach 2 °/s² (30 s)
+    /// and 8.8 °/s² (10 s)), and 1.0 s of look-ahead.
+    pub fn standard() -> Self {
+        Self {
+            min_moving_s: T::lit(1.5),
+            min_rate_deg_s: T::lit(0.5),
+            max_accel_deg_s2: T::lit(0.5),
+            lookahead_s: T::lit(1.0),
+        }
+    }
+
+    /// `true` when the measurement is in steady motion.
+    pub fn accepts(&self, m: &Measurement<T>) -> bool {
+        m.direction != Direction::Still
+            && m.moving_for_s >= self.min_moving_s
+            && m.rate_deg_s.abs() >= self.min_rate_deg_s
+            && m.accel_deg_s2.abs() <= self.max_accel_deg_s2
+    }
+}
+
+/// Most residuals held back for the look-ahead (1 s at 500 Hz); when full,
+/// the oldest is committed early.
+pub const LOOKAHEAD_CAPACITY: usize = 512;
+
+/// A residual waiting for its look-ahead: (time moving when seen, residual, up?).
+type Pending<T> = (T, T, bool);
+
+/// Running sums of the residual per direction.
+#[derive(Debug, Clone)]
 pub struct CalibrationLearner<T> {
+    steady: SteadyMotion<T>,
+    pending: heapless::Deque<Pending<T>, LOOKAHEAD_CAPACITY>,
     up: (T, u32),
     down: (T, u32),
 }
@@ -65,32 +129,71 @@ impl<T: Real> Default for CalibrationLearner<T> {
 }
 
 impl<T: Real> CalibrationLearner<T> {
-    /// No samples yet.
+    /// No samples yet; the [`SteadyMotion::standard`] criteria.
     pub fn new() -> Self {
+        Self::with_steady_motion(SteadyMotion::standard())
+    }
+
+    /// No samples yet; the given criteria.
+    pub fn with_steady_motion(steady: SteadyMotion<T>) -> Self {
         Self {
+            steady,
+            pending: heapless::Deque::new(),
             up: (T::lit(0.0), 0),
             down: (T::lit(0.0), 0),
         }
     }
 
-    /// Adds one sample of an unloaded run (samples with a still boom are ignored).
+    /// Adds one sample of an unloaded run (samples not in steady motion are
+    /// ignored).
     pub fn observe<M: HookLoadModel<T>>(
         &mut self,
         model: &M,
         m: &Measurement<T>,
     ) -> Result<(), ModelError> {
-        let slot = match m.direction {
-            Direction::Up => &mut self.up,
-            Direction::Down => &mut self.down,
-            Direction::Still => return Ok(()),
+        let up = match m.direction {
+            Direction::Up => true,
+            Direction::Down => false,
+            Direction::Still => {
+                self.pending.clear();
+                return Ok(());
+            }
         };
+        if !self.steady.accepts(m) || self.pending.front().is_some_and(|p| p.2 != up) {
+            // The motion was not steady: nor were the last `lookahead_s`.
+            self.pending.clear();
+            if !self.steady.accepts(m) {
+                return Ok(());
+            }
+        }
         let r = m.piston_force_n - model.piston_force_n(m.boom)?.at_zero;
-        slot.0 += r;
-        slot.1 = slot.1.saturating_add(1);
+        let now = m.moving_for_s;
+        while let Some(&(t, _, _)) = self.pending.front() {
+            if now - t < self.steady.lookahead_s && !self.pending.is_full() {
+                break;
+            }
+            if let Some((_, r, up)) = self.pending.pop_front() {
+                self.commit(r, up);
+            }
+        }
+        // Not full here: the loop above made room.
+        let _ = self.pending.push_back((now, r, up));
         Ok(())
     }
 
-    /// Number of (up, down) samples seen.
+    fn commit(&mut self, r: T, up: bool) {
+        let slot = if up { &mut self.up } else { &mut self.down };
+        slot.0 += r;
+        slot.1 = slot.1.saturating_add(1);
+    }
+
+    /// Ends a log: the residuals still waiting for their look-ahead are
+    /// dropped (the log may have ended mid-motion). Call between logs.
+    pub fn end_of_log(&mut self) {
+        self.pending.clear();
+    }
+
+    /// Number of (up, down) samples counted.
     pub fn counts(&self) -> (u32, u32) {
         (self.up.1, self.down.1)
     }

@@ -16,7 +16,7 @@
 //! | valid values | [`units`] | [`units::PressureBar`], [`units::BoomAngle`]: cannot hold a faulted reading |
 //! | checks | [`checks`] | NAMUR NE 43, range, stuck, rate of change |
 //! | force | [`piston_force`], [`filter`] | eq. 4.1 and the oscillation filter |
-//! | load | [`load_estimate`] | W from the model's affine piston force, friction per direction |
+//! | load | [`load_estimate`], [`swing`] | W from the model's affine piston force, friction per direction, load-swing correction |
 //! | capacity | [`capacity`] | tipping load from the affine jack reaction, safety factor, chart |
 //! | decision | [`state_machine`] | NORMAL / WARNING / OVERLOAD / FAULT, hysteresis, outputs |
 //! | logger | [`event_log`] | EN 13000 event ring buffer |
@@ -52,4 +52,5 @@ pub mod piston_force;
 pub mod replay;
 pub mod rigid_reference;
 pub mod state_machine;
+pub mod swing;
 pub mod units;

@@ -46,6 +46,7 @@ use crate::load_estimate::{
 };
 use crate::piston_force::piston_force_n;
 use crate::state_machine::{CycleInput, LimiterState, StateMachine, Thresholds};
+use crate::swing::{SwingGeometry, SwingObserver};
 use crate::units::{BoomAngle, PressureBar};
 
 /// Number of events the limiter's log holds.
@@ -122,6 +123,14 @@ pub struct LimiterConfig<T> {
     pub rate_filter_hz: T,
     /// Direction-of-motion thresholds.
     pub direction: DirectionThresholds<T>,
+    /// Lag of the angle sensor behind the boom for a steady rate (s): for a
+    /// pendulum potentiometer of natural frequency ω_n and damping ζ, 2ζ/ω_n
+    /// (the sensor's data; see [`Limiter`] "Time alignment"). 0 for a sensor
+    /// without lag.
+    pub angle_sensor_lag_s: T,
+    /// Crane geometry for the load-swing observer ([`crate::swing`]); `None`
+    /// turns the swing correction off.
+    pub swing: Option<SwingGeometry<T>>,
     /// Safety factor and chart.
     pub capacity: Capacity<T>,
     /// State machine thresholds and times.
@@ -132,7 +141,9 @@ pub struct LimiterConfig<T> {
 
 impl<T: Real> LimiterConfig<T> {
     /// The documented defaults of every module; filters at 3 Hz (force and
-    /// angle) and 1 Hz (rate); no calibration.
+    /// angle) and 1 Hz (rate); the angle sensor of the thesis crane's
+    /// recorder (pendulum of 2 Hz, ζ = 0.7: lag 2·0.7/(2π·2) = 0.1114 s); the
+    /// swing observer with the COLES Mobile 930 geometry; no calibration.
     pub fn standard() -> Self {
         Self {
             conversion: SensorConversion::standard(),
@@ -141,6 +152,8 @@ impl<T: Real> LimiterConfig<T> {
             angle_filter_hz: T::lit(3.0),
             rate_filter_hz: T::lit(1.0),
             direction: DirectionThresholds::standard(),
+            angle_sensor_lag_s: T::lit(2.0 * 0.7 / (2.0 * core::f64::consts::PI * 2.0)),
+            swing: Some(SwingGeometry::coles_930()),
             capacity: Capacity::standard(),
             thresholds: Thresholds::standard(),
             calibration: Calibration::none(),
@@ -157,6 +170,11 @@ impl<T: Real> LimiterConfig<T> {
             (hz(self.angle_filter_hz), "angle_filter_hz"),
             (hz(self.rate_filter_hz), "rate_filter_hz"),
             (self.direction.is_valid(), "direction"),
+            (
+                self.angle_sensor_lag_s.is_finite() && self.angle_sensor_lag_s >= T::lit(0.0),
+                "angle_sensor_lag_s",
+            ),
+            (self.swing.is_none_or(|g| g.is_valid()), "swing"),
             (self.capacity.is_valid(), "capacity"),
             (self.thresholds.is_valid(), "thresholds"),
             (self.calibration.is_valid(), "calibration"),
@@ -173,16 +191,28 @@ impl<T: Real> LimiterConfig<T> {
 pub struct Measurement<T> {
     /// Filtered piston force (N), transducer offsets removed.
     pub piston_force_n: T,
-    /// Filtered boom angle (degrees), pendulum offset removed.
+    /// Boom angle now (degrees): the filtered reading, pendulum offset
+    /// removed, advanced by rate × (sensor lag + filter delay).
     pub boom_angle_deg: T,
     /// Filtered angle rate (degrees per second).
     pub rate_deg_s: T,
+    /// Filtered angular acceleration (degrees per second²).
+    pub accel_deg_s2: T,
+    /// Time the boom has been moving in `direction` without interruption (s);
+    /// 0 when still.
+    pub moving_for_s: T,
     /// Direction of motion.
     pub direction: Direction,
     /// Direction whose friction is in the force (see [`crate::load_estimate`]).
     pub friction_direction: Direction,
-    /// The state handed to the model.
+    /// The boom state at the time of the filtered force (the angle advanced
+    /// by rate × sensor lag only): what the load estimate hands to the model.
     pub boom: BoomState<T>,
+    /// The boom state now: what the rated load is computed at.
+    pub boom_now: BoomState<T>,
+    /// tan of the predicted load swing at the time of the filtered force
+    /// (0 without the swing observer).
+    pub tan_swing: T,
 }
 
 /// Load, capacity and utilization of one cycle.
@@ -221,6 +251,21 @@ pub struct StepReport<T> {
 type Readings<T> = (PressureBar<T>, PressureBar<T>, BoomAngle<T>);
 
 /// The load moment limiter: configuration, model and running state.
+///
+/// ## Time alignment
+///
+/// The load is W = (F − corrections − F_model,0(θ))/per_kg(θ): the force and
+/// the angle must belong to the same instant, or the slope of F_model over θ
+/// (≈ 2 kN/° unloaded, ≈ 10 kN/° with 8 t at 60°) turns an angle error into a
+/// load error. At a steady rate ω the filtered force lags the boom by the
+/// filter's group delay d (= 2τ = 0.106 s at 3 Hz), and the filtered angle by
+/// d plus the angle sensor's own lag (the pendulum's 2ζ/ω_n, 0.111 s): left
+/// alone, the model was evaluated 0.111 s × 4.3 °/s ≈ 0.48° away from the
+/// force's angle, ≈ 1 kN of error unloaded. So the model gets the angle
+/// advanced by ω × sensor lag (the force's instant), and the rated load the
+/// angle advanced by ω × (sensor lag + d) (the present instant: lowering, the
+/// rated load falls, and it must not be read late). The same filter on force
+/// and angle keeps both delays equal whatever the cut-off.
 #[derive(Debug, Clone)]
 pub struct Limiter<T, M> {
     model: M,
@@ -229,7 +274,11 @@ pub struct Limiter<T, M> {
     force_filter: LowPass<T>,
     angle_filter: LowPass<T>,
     rate_filter: LowPass<T>,
+    accel_filter: LowPass<T>,
     previous_angle_deg: Option<T>,
+    previous_rate_deg_s: Option<T>,
+    moving_for_s: T,
+    swing: Option<SwingObserver<T>>,
     direction: DirectionDetector<T>,
     machine: StateMachine<T>,
     log: EventLog<T, EVENT_LOG_LEN>,
@@ -247,7 +296,11 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             force_filter: LowPass::new(config.force_filter_hz),
             angle_filter: LowPass::new(config.angle_filter_hz),
             rate_filter: LowPass::new(config.rate_filter_hz),
+            accel_filter: LowPass::new(config.rate_filter_hz),
             previous_angle_deg: None,
+            previous_rate_deg_s: None,
+            moving_for_s: T::lit(0.0),
+            swing: config.swing.map(SwingObserver::new),
             direction: DirectionDetector::new(config.direction),
             machine: StateMachine::new(config.thresholds),
             log: EventLog::new(),
@@ -457,7 +510,13 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         self.force_filter.reset();
         self.angle_filter.reset();
         self.rate_filter.reset();
+        self.accel_filter.reset();
         self.previous_angle_deg = None;
+        self.previous_rate_deg_s = None;
+        self.moving_for_s = T::lit(0.0);
+        if let Some(s) = self.swing.as_mut() {
+            s.reset();
+        }
     }
 
     /// Stage 2: force, filters, rate and direction.
@@ -480,18 +539,48 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         };
         self.previous_angle_deg = Some(angle_f);
         let rate_f = self.rate_filter.update(raw_rate, dt_s);
+        let raw_accel = match self.previous_rate_deg_s {
+            Some(prev) if dt_s > T::lit(0.0) => (rate_f - prev) / dt_s,
+            _ => self.accel_filter.output().unwrap_or(T::lit(0.0)),
+        };
+        self.previous_rate_deg_s = Some(rate_f);
+        let accel_f = self.accel_filter.update(raw_accel, dt_s);
+        let previous_direction = self.direction.current();
         let direction = self.direction.update(rate_f);
+        self.moving_for_s = if direction == Direction::Still {
+            T::lit(0.0)
+        } else if direction == previous_direction {
+            self.moving_for_s + dt_s
+        } else {
+            T::lit(0.0)
+        };
+        // Time alignment (see the type's doc): the filtered force stands for
+        // t − d (d: the filter delay), the filtered angle for t − d − lag.
+        let at_force = angle_f + rate_f * self.config.angle_sensor_lag_s;
+        let now = at_force + rate_f * self.force_filter.delay_s();
         let to_rad = T::pi() / T::lit(180.0);
+        let boom = BoomState {
+            angle_rad: at_force * to_rad,
+            rate_rad_s: rate_f * to_rad,
+        };
+        let tan_swing = match self.swing.as_mut() {
+            Some(s) => s.update(boom.angle_rad, dt_s),
+            None => T::lit(0.0),
+        };
         Measurement {
             piston_force_n: force_f,
-            boom_angle_deg: angle_f,
+            boom_angle_deg: now,
             rate_deg_s: rate_f,
+            accel_deg_s2: accel_f,
+            moving_for_s: self.moving_for_s,
             direction,
             friction_direction: self.direction.friction_direction(),
-            boom: BoomState {
-                angle_rad: angle_f * to_rad,
+            boom,
+            boom_now: BoomState {
+                angle_rad: now * to_rad,
                 rate_rad_s: rate_f * to_rad,
             },
+            tan_swing,
         }
     }
 
@@ -503,12 +592,13 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             m.piston_force_n,
             &self.config.calibration,
             m.friction_direction,
+            m.tan_swing,
         )
         .map_err(Fault::Estimate)?;
         let rating = self
             .config
             .capacity
-            .rating(&self.model, m.boom)
+            .rating(&self.model, m.boom_now)
             .map_err(Fault::Capacity)?;
         let ceiling = T::lit(UTILIZATION_CEILING);
         let utilization = if rating.rated_load_kg > T::lit(0.0) {

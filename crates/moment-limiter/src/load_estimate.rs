@@ -10,11 +10,17 @@
 //!
 //! so W = (F_meas − force_offset − friction(direction) − at_zero) / per_kg.
 //!
-//! **When the boom is still**, the friction is static and its sign unknown:
-//! the pressure trapped when the boom stopped keeps the sign of the last
-//! motion, so the last moving direction is used. Before any motion has been
-//! seen (power-up), the Down correction is used: it gives the highest, i.e.
-//! the safe, estimate.
+//! **When the boom is still**, the friction is static: anywhere between zero
+//! (the seals relaxed) and the friction of the last motion (the pressure
+//! trapped when the boom stopped). The limiter takes the end of that interval
+//! that gives the higher, i.e. the safe, load: after lowering the Down
+//! correction (the force may read low by up to friction_down), after raising
+//! none (the force may read high, which only overestimates). Before any
+//! motion has been seen (power-up), the Down correction.
+//!
+//! **A swinging load** pulls the tip sideways too: the piston force grows by
+//! per_kg·W·tan θ·tan φ ([`crate::swing`]), so the slope per kg is
+//! per_kg·(1 + tan θ·tan φ) with tan φ from the swing observer (0 without it).
 
 use crane_model::load_model::{BoomState, HookLoadModel};
 use crane_model::{ModelError, Real};
@@ -101,11 +107,16 @@ impl<T: Real> DirectionDetector<T> {
         self.current
     }
 
+    /// The present direction (before the next update).
+    pub fn current(&self) -> Direction {
+        self.current
+    }
+
     /// Direction whose friction is in the measured force now (see module doc).
     pub fn friction_direction(&self) -> Direction {
         match (self.current, self.last_moving) {
-            (Direction::Still, Some(last)) => last,
-            (Direction::Still, None) => Direction::Down,
+            (Direction::Still, Some(Direction::Up)) => Direction::Still,
+            (Direction::Still, _) => Direction::Down,
             (moving, _) => moving,
         }
     }
@@ -180,23 +191,26 @@ pub enum EstimateError {
 }
 
 /// Hook load (kg) from the filtered measured force (see the module doc).
-/// The force must already have the transducer offsets removed.
+/// The force must already have the transducer offsets removed; `tan_swing`
+/// is tan φ of the load swing (0: hanging straight).
 pub fn estimate_load_kg<T: Real, M: HookLoadModel<T>>(
     model: &M,
     boom: BoomState<T>,
     force_n: T,
     calibration: &Calibration<T>,
     friction_direction: Direction,
+    tan_swing: T,
 ) -> Result<T, EstimateError> {
     let f = model.piston_force_n(boom).map_err(EstimateError::Model)?;
-    if !(f.per_kg.is_finite() && f.at_zero.is_finite() && f.per_kg > T::lit(0.0)) {
+    let per_kg = f.per_kg * (T::lit(1.0) + boom.angle_rad.tan() * tan_swing);
+    if !(per_kg.is_finite() && f.at_zero.is_finite() && per_kg > T::lit(0.0)) {
         return Err(EstimateError::NotObservable);
     }
     let w = (force_n
         - calibration.force_offset_n
         - calibration.friction_n(friction_direction)
         - f.at_zero)
-        / f.per_kg;
+        / per_kg;
     if w.is_finite() {
         Ok(w)
     } else {
@@ -216,7 +230,8 @@ mod tests {
         assert_eq!(d.update(0.2), Direction::Up);
         assert_eq!(d.update(0.1), Direction::Up); // above stop threshold
         assert_eq!(d.update(0.01), Direction::Still);
-        assert_eq!(d.friction_direction(), Direction::Up);
+        // Still after raising: no correction (the safe end of [0, friction_up]).
+        assert_eq!(d.friction_direction(), Direction::Still);
         assert_eq!(d.update(-1.0), Direction::Down);
     }
 }

@@ -5,7 +5,8 @@
 //! of motion) with no calibration, and
 //! `moment_limiter::calibration::CalibrationLearner` averages the difference
 //! between the measured piston force and the model's force at W = 0, per
-//! direction (see that module for why the offset/friction split is
+//! direction, over the samples in steady motion (ramps and standstill left
+//! out) (see that module for why the offset/friction split is
 //! symmetric). Samples in which the limiter found a fault are left out and
 //! counted. A log with a `true_load_kg` column that is not 0 is refused.
 //!
@@ -79,6 +80,7 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
         parser
             .finish()
             .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
+        learner.end_of_log();
         if faulted > 0 {
             eprintln!("warning: {name}: {faulted} samples with a sensor or model fault left out");
         }
