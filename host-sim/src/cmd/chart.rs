@@ -27,6 +27,10 @@ pub struct ChartArgs {
     /// Boom angle step of the table (deg).
     #[arg(long, default_value_t = 1.0)]
     step_deg: f64,
+    /// Lowest boom angle of the table (deg). Below about 1° the boom's sag moves
+    /// the hook out faster than eq. 4.3's radius shrinks, so the chart starts at 5°.
+    #[arg(long, default_value_t = 5.0)]
+    min_deg: f64,
 }
 
 /// One row of the chart.
@@ -65,13 +69,13 @@ struct ChartReport {
 }
 
 /// The quasi-static chart over boom angles.
-pub fn chart_rows(safety_factor: f64, step_deg: f64) -> Result<Vec<ChartRow>> {
+pub fn chart_rows(safety_factor: f64, min_deg: f64, step_deg: f64) -> Result<Vec<ChartRow>> {
     let model = thesis_model()?;
-    let n = (80.0 / step_deg).floor() as usize;
+    let n = ((80.0 - min_deg) / step_deg).floor() as usize;
     (0..=n)
         .into_par_iter()
         .map(|i| {
-            let deg = i as f64 * step_deg;
+            let deg = min_deg + i as f64 * step_deg;
             let tp = model.tipping_load_at_rest(deg.to_radians()).map_err(|e| anyhow::anyhow!("{e}"))?;
             let tip = (tp.tipping_load_kg < 1e9).then_some(tp.tipping_load_kg);
             Ok(ChartRow { radius_m: tp.radius_m, boom_angle_deg: deg, tipping_load_kg: tip, rated_load_kg: tip.map(|w| w / safety_factor) })
@@ -136,7 +140,10 @@ pub fn run(args: ChartArgs) -> Result<u8> {
     if !(args.step_deg >= 0.1 && args.step_deg <= 10.0) {
         bail!("--step-deg must be in [0.1, 10]");
     }
-    let rows = chart_rows(args.safety_factor, args.step_deg)?;
+    if !(args.min_deg >= 0.0 && args.min_deg < 80.0) {
+        bail!("--min-deg must be in [0, 80)");
+    }
+    let rows = chart_rows(args.safety_factor, args.min_deg, args.step_deg)?;
     let thesis = thesis_tipping()?;
     if let Some(path) = &args.plot {
         let rated: Vec<(f64, f64)> = rows.iter().filter_map(|r| r.rated_load_kg.map(|w| (r.radius_m, w / 1e3))).filter(|p| p.1 < 40.0).collect();

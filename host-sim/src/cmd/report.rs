@@ -45,7 +45,7 @@ pub fn run(args: ReportArgs) -> Result<u8> {
             Ok((name.to_string(), peak, tip, fa))
         })
         .collect();
-    let chart = chart_rows(1.5, 1.0)?;
+    let chart = chart_rows(1.5, 5.0, 1.0)?;
     let tipping = thesis_tipping()?;
     let rated: Vec<(f64, f64)> = chart.iter().filter_map(|r| r.rated_load_kg.map(|w| (r.radius_m, w / 1e3))).filter(|p| p.1 < 40.0).collect();
     let dyn_pts: Vec<(f64, f64)> = tipping.iter().filter_map(|t| t.dynamic_radius_m.map(|r| (r, t.load_kg / 1e3))).collect();
