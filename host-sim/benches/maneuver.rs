@@ -1,9 +1,9 @@
 //! The thesis's reference maneuver at its resolution (12 elements, 4 modes):
 //! 3300 kg, 30 s, cycloidal, boom up, with a sample (multipliers, reactions,
 //! deflections) every 10 ms. Target: median ≤ 20 ms (1500× faster than real time).
-use criterion::{criterion_group, criterion_main, Criterion};
 // criterion_group! generates an undocumented function.
 #![allow(missing_docs)]
+use criterion::{criterion_group, criterion_main, Criterion};
 use crane_model::modal::{MeshRefinement, THESIS_BASIS};
 use crane_model::multibody::ThesisModel;
 use crane_model::profile::RampShape;
