@@ -22,6 +22,12 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         }
     }
 
+    /// Gravity per unit mass and the weight of rope and load at C, in the boom frame.
+    fn body_loads(&self, boom_angle_rad: T, load_kg: T) -> Result<(Vector2<T>, Vector2<T>), ModelError> {
+        let g_body = rotation(boom_angle_rad).transpose() * Vector2::new(T::zero(), -self.gravity_m_s2);
+        Ok((g_body, self.tip_weight_body(boom_angle_rad, load_kg)?))
+    }
+
     fn tip_weight_body(&self, boom_angle_rad: T, load_kg: T) -> Result<Vector2<T>, ModelError> {
         let a0 = self.geometry.boom_foot;
         let l = a0.y + self.modes.length_m * boom_angle_rad.sin() - self.load_clearance_m;
@@ -45,20 +51,13 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         boom_angle_rad: T,
         load_kg: T,
     ) -> Result<FreeCoordinates<T, M>, ModelError> {
-        let g_body =
-            rotation(boom_angle_rad).transpose() * Vector2::new(T::zero(), -self.gravity_m_s2);
-        let tip = self.tip_weight_body(boom_angle_rad, load_kg)?;
+        let (g_body, tip) = self.body_loads(boom_angle_rad, load_kg)?;
         let mut eta = [T::zero(); M];
         for (k, e) in eta.iter_mut().enumerate() {
             let (sg, st) = (&self.modes.static_gravity[k], &self.modes.static_tip[k]);
             *e = sg[0] * g_body.x + sg[1] * g_body.y + st[0] * tip.x + st[1] * tip.y;
         }
-        Ok(FreeCoordinates {
-            eta,
-            eta_rate: [T::zero(); M],
-            swing_rad: hanging(),
-            swing_rate: T::zero(),
-        })
+        Ok(at_rest(eta))
     }
 
     /// [`Self::equilibrium_state`] for an already computed rigid motion (no trigonometry).
@@ -78,7 +77,7 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
             let w = self.modes.omega_rad_s[k];
             *e = f[k] / (w * w);
         }
-        FreeCoordinates { eta, eta_rate: [T::zero(); M], swing_rad: hanging(), swing_rate: T::zero() }
+        at_rest(eta)
     }
 
     /// The thesis's initial state (SPEC §3) with the projection done in the energy
@@ -91,24 +90,14 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         boom_angle_rad: T,
         load_kg: T,
     ) -> Result<FreeCoordinates<T, M>, ModelError> {
-        let g_body =
-            rotation(boom_angle_rad).transpose() * Vector2::new(T::zero(), -self.gravity_m_s2);
-        let tip = self.tip_weight_body(boom_angle_rad, load_kg)?;
-        let d = SMatrix::<T, 2, M>::from_fn(|r, c| self.modes.first_moment_modes[r][c]);
-        let tip_modes = SMatrix::<T, 2, M>::from_fn(|r, c| self.modes.tip_modes[r][c]);
-        let f: SVector<T, M> = d.transpose() * g_body + tip_modes.transpose() * tip;
-        let mut eta = [T::zero(); M];
-        for (k, e) in eta.iter_mut().enumerate() {
-            let w = self.modes.omega_rad_s[k];
-            *e = f[k] / (w * w);
-        }
-        Ok(FreeCoordinates {
-            eta,
-            eta_rate: [T::zero(); M],
-            swing_rad: hanging(),
-            swing_rate: T::zero(),
-        })
+        let (g_body, tip) = self.body_loads(boom_angle_rad, load_kg)?;
+        Ok(self.equilibrium_from_body_loads(g_body, tip))
     }
+}
+
+/// Modes at `eta`, rope hanging, nothing moving.
+fn at_rest<T: Real, const M: usize>(eta: [T; M]) -> FreeCoordinates<T, M> {
+    FreeCoordinates { eta, eta_rate: [T::zero(); M], swing_rad: hanging(), swing_rate: T::zero() }
 }
 
 /// T(θ): rotation from the body frame to the plane.
