@@ -3,6 +3,7 @@
 use crane_model::modal::{MeshRefinement, ModalAnalysis, THESIS_BASIS};
 use crane_model::CraneData;
 use serde::Serialize;
+use std::io::Write;
 
 /// Arguments of `crane-sim modes`.
 #[derive(clap::Args, Debug)]
@@ -44,6 +45,15 @@ fn row(kind: &'static str, omega: f64) -> ModeRow {
     }
 }
 
+/// One table of modes: number, kind, ω, f.
+fn write_table(out: &mut impl Write, title: &str, rows: &[ModeRow]) {
+    let _ = writeln!(out, "\n{title}");
+    let _ = writeln!(out, "  {:>2}  {:<14} {:>12} {:>10}", "#", "kind", "omega rad/s", "f Hz");
+    for (i, m) in rows.iter().enumerate() {
+        let _ = writeln!(out, "  {:>2}  {:<14} {:>12.3} {:>10.3}", i + 1, m.kind, m.omega_rad_s, m.frequency_hz);
+    }
+}
+
 /// Runs the subcommand; returns the exit code.
 pub fn run(args: ModesArgs) -> anyhow::Result<u8> {
     let crane = CraneData::coles_mobile_930();
@@ -76,45 +86,17 @@ pub fn run(args: ModesArgs) -> anyhow::Result<u8> {
         println!("{}", serde_json::to_string_pretty(&report)?);
         return Ok(0);
     }
-    println!(
-        "Boom (body 1) of the COLES Mobile 930, {} elements",
-        report.elements
+    // A closed stdout (`| head`) is not an error of this command: ignore write errors.
+    let mut out = std::io::stdout().lock();
+    let _ = writeln!(out, "Boom (body 1) of the COLES Mobile 930, {} elements", report.elements);
+    let _ = writeln!(out, "  mass                 {:10.2} kg", report.boom_mass_kg);
+    let _ = writeln!(out, "  centre of mass       {:10.4} m from A0", report.centre_of_mass_from_a0_m);
+    let _ = writeln!(
+        out,
+        "  Rayleigh damping     alpha = {:.5} 1/s, beta = {:.4e} s (zeta = 2 % at the two lowest retained modes)",
+        report.rayleigh_alpha_per_s, report.rayleigh_beta_s
     );
-    println!("  mass                 {:10.2} kg", report.boom_mass_kg);
-    println!(
-        "  centre of mass       {:10.4} m from A0",
-        report.centre_of_mass_from_a0_m
-    );
-    println!("  Rayleigh damping     alpha = {:.5} 1/s, beta = {:.4e} s (zeta = 2 % at the two lowest retained modes)", report.rayleigh_alpha_per_s, report.rayleigh_beta_s);
-    println!();
-    println!("Retained modes (thesis basis)");
-    println!(
-        "  {:>2}  {:<14} {:>12} {:>10}",
-        "#", "kind", "omega rad/s", "f Hz"
-    );
-    for (i, m) in report.retained.iter().enumerate() {
-        println!(
-            "  {:>2}  {:<14} {:>12.3} {:>10.3}",
-            i + 1,
-            m.kind,
-            m.omega_rad_s,
-            m.frequency_hz
-        );
-    }
-    println!();
-    println!("Lowest constrained modes of the boom (A0 pinned, A clamped)");
-    println!(
-        "  {:>2}  {:<14} {:>12} {:>10}",
-        "#", "kind", "omega rad/s", "f Hz"
-    );
-    for (i, m) in report.lowest_constrained.iter().enumerate() {
-        println!(
-            "  {:>2}  {:<14} {:>12.3} {:>10.3}",
-            i + 1,
-            m.kind,
-            m.omega_rad_s,
-            m.frequency_hz
-        );
-    }
+    write_table(&mut out, "Retained modes (thesis basis)", &report.retained);
+    write_table(&mut out, "Lowest constrained modes of the boom (A0 pinned, A clamped)", &report.lowest_constrained);
     Ok(0)
 }
