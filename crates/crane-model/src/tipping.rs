@@ -11,9 +11,9 @@
 //! ([`CraneModel::tipping_load_at_rest`]); no search.
 
 use crate::dynamics::Reactions;
-use crate::load_model::{Affine, BoomState, HookLoadModel};
+use crate::load_model::{Affine, BoomState, HookLoadModel, Quadratic};
 use crate::multibody::{CraneModel, FreeCoordinates};
-use crate::profile::RampShape;
+use crate::profile::{ActuatorMotion, RampShape};
 use crate::simulation::{Direction, Maneuver, SimulationOptions};
 use crate::{ModelError, Real};
 use nalgebra::SVector;
@@ -133,8 +133,8 @@ fn smallest_positive_root<T: Real>(a: T, b: T, c: T) -> Option<T> {
 /// Piston force and F_A at rest as exact quadratics in W, from three evaluations.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LoadResponses<T> {
-    /// Piston force (N) as an affine map: secant through W = 0 and the rated load.
-    pub piston_force: Affine<T>,
+    /// Piston force (N): the exact quadratic in W.
+    pub piston_force: Quadratic<T>,
     /// F_A (N) as an affine map: secant through W = 0 and the tipping load, so its
     /// root is the exact quasi-static tipping load.
     pub jack_reaction: Affine<T>,
@@ -146,9 +146,9 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
     /// What the limiter needs at a boom state, from three evaluations of the
     /// multipliers at W = 0, W1 and 2·W1 with the boom at its static deflection for
     /// each load: F_A(W) and F(W) are exact quadratics there (the sag grows with W),
-    /// so the tipping load is the root of F_A's, and the affine maps returned are
-    /// their secants through W = 0 and the tipping (resp. rated) load — exact at
-    /// those points, which is where the limiter decides.
+    /// so the tipping load is the root of F_A's, F_A is returned as its secant
+    /// through W = 0 and the tipping load (exact where the crane tips), and F as the
+    /// quadratic itself (the limiter solves it for W).
     pub fn load_responses(&self, boom: BoomState<T>) -> Result<LoadResponses<T>, ModelError> {
         let w1 = T::lit(5000.0);
         let two = T::lit(2.0);
@@ -178,21 +178,48 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         } else {
             Affine { at_zero: fa, per_kg: fb }
         };
-        let w_ref = (tipping / T::lit(SAFETY_FACTOR)).min(T::lit(20_000.0)).max(T::lit(100.0));
-        let piston_force = Affine { at_zero: pa, per_kg: pb + pc * w_ref };
+        let piston_force = Quadratic { at_zero: pa, per_kg: pb, per_kg2: pc };
         Ok(LoadResponses { piston_force, jack_reaction, tipping_load_kg: tipping })
     }
 }
 
 impl<T: Real, const M: usize> HookLoadModel<T> for CraneModel<T, M> {
     /// See [`CraneModel::load_responses`].
-    fn piston_force_n(&self, boom: BoomState<T>) -> Result<Affine<T>, ModelError> {
+    fn piston_force_n(&self, boom: BoomState<T>) -> Result<Quadratic<T>, ModelError> {
         Ok(self.load_responses(boom)?.piston_force)
     }
 
     /// See [`CraneModel::load_responses`].
     fn jack_reaction_n(&self, boom: BoomState<T>) -> Result<Affine<T>, ModelError> {
         Ok(self.load_responses(boom)?.jack_reaction)
+    }
+
+    /// J/(da/dθ1), J the mechanism's inertia reduced to θ1: twice its kinetic
+    /// energy with the boom turning at 1 rad/s (undeformed boom about A0, and the
+    /// lug, rod and cylinder-with-oil at the velocities the mechanism gives them).
+    fn piston_force_per_boom_accel(&self, boom_angle_rad: T) -> Result<T, ModelError> {
+        let lever = self.geometry.extension_per_radian(boom_angle_rad);
+        let act = ActuatorMotion {
+            extension_m: self.geometry.extension_at_angle(boom_angle_rad),
+            rate_m_s: lever,
+            accel_m_s2: T::zero(),
+        };
+        let mech = self.geometry.motion(act)?;
+        let cylinder = self.cylinder.at_extension(act.extension_m)?;
+        let two = T::lit(2.0);
+        let mut j = self.modes.inertia_rest;
+        for (b, m) in [(&mech.lug, self.lug), (&mech.rod, self.rod), (&mech.cylinder, cylinder)] {
+            let w = b.angular_velocity;
+            j += m.mass_kg * b.velocity.norm_squared()
+                + two * m.first_moment_kg_m * w * b.normal().dot(&b.velocity)
+                + m.inertia_kg_m2 * w * w;
+        }
+        let per_accel = j / lever;
+        if lever > T::zero() && per_accel.is_finite() {
+            Ok(per_accel)
+        } else {
+            Err(ModelError::OutOfReach)
+        }
     }
 
     fn radius_m(&self, boom_angle_rad: T) -> T {
@@ -233,12 +260,16 @@ impl<T: Real, const M: usize> CachedLoadModel<T, M> {
 }
 
 impl<T: Real, const M: usize> HookLoadModel<T> for CachedLoadModel<T, M> {
-    fn piston_force_n(&self, boom: BoomState<T>) -> Result<Affine<T>, ModelError> {
+    fn piston_force_n(&self, boom: BoomState<T>) -> Result<Quadratic<T>, ModelError> {
         Ok(self.responses(boom)?.piston_force)
     }
 
     fn jack_reaction_n(&self, boom: BoomState<T>) -> Result<Affine<T>, ModelError> {
         Ok(self.responses(boom)?.jack_reaction)
+    }
+
+    fn piston_force_per_boom_accel(&self, boom_angle_rad: T) -> Result<T, ModelError> {
+        self.model.piston_force_per_boom_accel(boom_angle_rad)
     }
 
     fn radius_m(&self, boom_angle_rad: T) -> T {

@@ -115,3 +115,56 @@ fn dynamic_tipping_is_never_on_the_unsafe_side() {
         assert!(dynamic - quasi < 3.0, "{load} kg: difference {}° too large for the swing", dynamic - quasi);
     }
 }
+
+/// The inertia term the limiter subtracts (J/(da/dθ1)) against the full
+/// multipliers: the piston force at W = 0 with the actuator accelerating the boom
+/// at α, minus the force at α = 0, over α. Held at a fixed swing angle, the
+/// pendulum would be carried along with the tip, which a hanging rope is not
+/// (the limiter's swing observer accounts for it), so the rope's mass is set to
+/// next to zero here. Two independent routes: kinetic energy of the mechanism
+/// (the closed form) vs the Lagrange multiplier of the full 19-coordinate system.
+#[test]
+fn inertia_term_matches_the_multipliers() {
+    use crane_model::load_model::HookLoadModel;
+    use crane_model::profile::ActuatorMotion;
+    let m = ThesisModel { rope_kg_per_m: 1e-6, ..model() }; // 0 would make the swing singular
+    for deg in [40.0f64, 50.0, 60.0, 70.0, 80.0] {
+        let th = deg.to_radians();
+        let free = m.equilibrium_state(th, 0.0).expect("equilibrium");
+        let force = |alpha: f64| {
+            let act = ActuatorMotion { accel_m_s2: m.geometry.extension_per_radian(th) * alpha, ..m.actuator_at(th, 0.0) };
+            let mut ev = m.evaluate(act, 0.0, &free).expect("evaluate");
+            ev.eta_accel = nalgebra::SVector::zeros();
+            ev.swing_accel = 0.0;
+            let (_, lambda) = m.multipliers(&ev).expect("multipliers");
+            m.reactions(&lambda).piston_force_n
+        };
+        let alpha = 0.1;
+        let from_multipliers = (force(alpha) - force(0.0)) / alpha;
+        let closed_form = m.piston_force_per_boom_accel(th).expect("inertia");
+        let rel = closed_form / from_multipliers - 1.0;
+        println!("{deg}°: {from_multipliers:.0} N/(rad/s²) from the multipliers, {closed_form:.0} closed form ({rel:+.2e})");
+        assert!(rel.abs() < 1e-4, "{deg}°: {rel}");
+    }
+}
+
+/// The quadratic piston force is exact: solving it for W gives back the load the
+/// multipliers were computed with, at rest with the boom at its static deflection
+/// for that load, across the loads and angles of the chart.
+#[test]
+fn quadratic_piston_force_inverts_to_the_true_load() {
+    use crane_model::load_model::HookLoadModel;
+    let m = model();
+    let mut worst: f64 = 0.0;
+    for deg in [20.0f64, 40.0, 60.0, 80.0] {
+        let th = deg.to_radians();
+        let f = m.piston_force_n(BoomState { angle_rad: th, rate_rad_s: 0.0 }).expect("force");
+        for load in [500.0, 3300.0, 8000.0, 15000.0] {
+            let measured = m.reactions_at_rest(th, load).expect("reactions").piston_force_n;
+            let w = f.solve(measured).expect("solvable");
+            worst = worst.max((w / load - 1.0).abs());
+        }
+    }
+    println!("worst relative error of the inverted load: {worst:.1e}");
+    assert!(worst < 1e-6, "{worst}");
+}
