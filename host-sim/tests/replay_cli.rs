@@ -63,8 +63,9 @@ fn overload_while_lowering_exits_2() {
     assert_eq!(states, ["NORMAL", "WARNING", "OVERLOAD"]);
     let overload = &j["events"][2];
     assert!(overload["utilization"].as_f64().unwrap() >= 1.0);
-    // 8000 kg in the log; the estimate within a few percent of it.
-    assert!((overload["load_kg"].as_f64().unwrap() / 8000.0 - 1.0).abs() < 0.05);
+    // 8000 kg in the log; the load as read within SAE J376's 100–110 %.
+    let read = overload["load_kg"].as_f64().unwrap() / 8000.0;
+    assert!((1.0..=1.10).contains(&read), "{read}");
 }
 
 #[test]

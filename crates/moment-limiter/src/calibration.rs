@@ -8,24 +8,21 @@
 //! [`Measurement`]s of a [`crate::limiter::Limiter`] run with
 //! [`Calibration::none`]).
 //!
-//! Only steady motion ([`SteadyMotion`]): the model is quasi-static, so in the
-//! acceleration and deceleration ramps the measured force also carries the
-//! inertia of the boom (unloaded, 10 s move: the piston force drops from 34 kN
-//! to 2.5 kN when lowering starts at 80° and overshoots 128 kN by 27 kN when it
-//! stops at 40°), and near standstill the friction is not yet (or no longer)
-//! fully developed. Counting those samples as "moving" made the learned
-//! residuals +9.2 kN / −6.1 kN where the logs carried +12 / −8 kN. A sample is
-//! steady when the boom has moved in one direction for at least
-//! `min_moving_s` (the filters and the boom's oscillation after the ramp have
-//! settled), at least `min_rate_deg_s`, with |filtered acceleration| at most
-//! `max_accel_deg_s2`, **and stays so for `lookahead_s` after it**: the
-//! acceleration is derived from the filtered angle, so a deceleration shows in
-//! it ≈ 0.75 s after it shows in the force (pendulum 0.11 s + angle filter
-//! 0.11 s + two 1 Hz stages on rate and acceleration); the learner holds the
-//! last `lookahead_s` of residuals back and drops them when the motion turns
-//! out not to have been steady. (The learner runs on recorded logs, after the
-//! fact, so it can afford to look ahead; the limiter cannot and does not need
-//! to.)
+//! Only steady motion ([`SteadyMotion`]): the residual removes the boom's
+//! inertia with the limiter's own acceleration estimate, but in the ramps
+//! that estimate lags the force by the pendulum's 0.11 s, and near standstill
+//! the friction is not yet (or no longer) fully developed. (Counting every
+//! "moving" sample made the learned residuals +9.2 kN / −6.1 kN where the logs
+//! carried +12 / −8 kN.) A sample is steady when the boom has moved in one
+//! direction for at least `min_moving_s` (the filters and the boom's
+//! oscillation after the ramp have settled), at least `min_rate_deg_s`, with
+//! |acceleration| at most `max_accel_deg_s2`, **and stays so for
+//! `lookahead_s` after it**: the acceleration comes from the filtered
+//! pendulum angle, so a deceleration shows in it ≈ 0.11 s after it shows in
+//! the force, and the learner holds the last `lookahead_s` of residuals back
+//! and drops them when the motion turns out not to have been steady. (The
+//! learner runs on recorded logs, after the fact, so it can afford to look
+//! ahead; the limiter cannot and does not need to.)
 //!
 //! A constant zero offset and a per-direction friction cannot be told apart
 //! from these two numbers, and the limiter does not need them apart: it
@@ -36,7 +33,7 @@
 //! offsets (bar) and the pendulum offset are not learned (0); a technician
 //! may set them in the calibration file.
 
-use crane_model::load_model::HookLoadModel;
+use crane_model::load_model::{BoomState, HookLoadModel};
 use crane_model::{ModelError, Real};
 
 use crate::limiter::Measurement;
@@ -84,15 +81,16 @@ pub struct SteadyMotion<T> {
 }
 
 impl<T: Real> SteadyMotion<T> {
-    /// Defaults: moving for 1.5 s (the thesis's longest ramp, plus the rate
+    /// Defaults: moving for 1.5 s (the thesis's longest ramp, plus the
     /// filter's delay), |rate| ≥ 0.5 °/s (the slowest thesis maneuver runs at
-    /// 1.4 °/s), |acceleration| ≤ 0.5 °/s² (the ramps reach 2 °/s² (30 s)
-    /// and 8.8 °/s² (10 s)), and 1.0 s of look-ahead.
+    /// 1.4 °/s), |acceleration| ≤ 2 °/s² (the filtered ramps reach 2 °/s²
+    /// (30 s) and 7 °/s² (10 s); steady motion reads ±0.5 °/s² of noise), and
+    /// 1.0 s of look-ahead.
     pub fn standard() -> Self {
         Self {
             min_moving_s: T::lit(1.5),
             min_rate_deg_s: T::lit(0.5),
-            max_accel_deg_s2: T::lit(0.5),
+            max_accel_deg_s2: T::lit(2.0),
             lookahead_s: T::lit(1.0),
         }
     }
@@ -166,7 +164,15 @@ impl<T: Real> CalibrationLearner<T> {
                 return Ok(());
             }
         }
-        let r = m.piston_force_n - model.piston_force_n(m.boom)?.at_zero;
+        // The same model terms as the estimate (load_estimate, "Motion").
+        let at_rest = BoomState {
+            angle_rad: m.boom.angle_rad,
+            rate_rad_s: T::lit(0.0),
+        };
+        let inertia =
+            model.piston_force_per_boom_accel(m.boom.angle_rad)? * m.accel_deg_s2 * T::pi()
+                / T::lit(180.0);
+        let r = m.piston_force_n - inertia - model.piston_force_n(at_rest)?.at_zero;
         let now = m.moving_for_s;
         while let Some(&(t, _, _)) = self.pending.front() {
             if now - t < self.steady.lookahead_s && !self.pending.is_full() {

@@ -16,7 +16,7 @@
 //! | valid values | [`units`] | [`units::PressureBar`], [`units::BoomAngle`]: cannot hold a faulted reading |
 //! | checks | [`checks`] | NAMUR NE 43, range, stuck, rate of change |
 //! | force | [`piston_force`], [`filter`] | eq. 4.1 and the oscillation filter |
-//! | load | [`load_estimate`], [`swing`] | W from the model's affine piston force, friction per direction, load-swing correction |
+//! | load | [`load_estimate`], [`swing`] | W from the model's piston force (quadratic in W), friction per direction, boom inertia, load-swing correction, read ×1.05 (SAE J376) |
 //! | capacity | [`capacity`] | tipping load from the affine jack reaction, safety factor, chart |
 //! | decision | [`state_machine`] | NORMAL / WARNING / OVERLOAD / FAULT, hysteresis, outputs |
 //! | logger | [`event_log`] | EN 13000 event ring buffer |

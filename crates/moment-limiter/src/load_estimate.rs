@@ -1,26 +1,49 @@
 //! Hook-load estimate from the filtered piston force (thesis §4.2, SPEC §4.3).
 //!
-//! At the present boom state the model gives the piston force as an affine
-//! function of the hook load, F_model(W) = at_zero + per_kg·W. The measured
+//! At the present boom state the model gives the piston force as a function
+//! of the hook load, F_model(W) = at_zero + per_kg·W + per_kg2·W². The measured
 //! force also carries the cylinder's friction, whose sign follows the motion
 //! (the up and down traces of the thesis differ by it), and a zero offset:
 //!
 //! F_meas = F_model(W) + force_offset + friction(direction), with
 //! friction(Up) = +friction_up_n, friction(Down) = −friction_down_n,
 //!
-//! so W = (F_meas − force_offset − friction(direction) − at_zero) / per_kg.
+//! so W solves F_model(W) = F_meas − force_offset − friction(direction). The
+//! model's F_model is exactly quadratic in W (the boom's sag grows with the
+//! load, [`crane_model::load_model::Quadratic`]); its slope per kg is close to
+//! constant, and a load for which the slope at W = 0 is not positive, or which
+//! no load on the rising branch explains, is not observable (a FAULT).
 //!
 //! **When the boom is still**, the friction is static: anywhere between zero
 //! (the seals relaxed) and the friction of the last motion (the pressure
-//! trapped when the boom stopped). The limiter takes the end of that interval
-//! that gives the higher, i.e. the safe, load: after lowering the Down
-//! correction (the force may read low by up to friction_down), after raising
-//! none (the force may read high, which only overestimates). Before any
-//! motion has been seen (power-up), the Down correction.
+//! trapped when the boom stopped), or, with no motion seen since power-up,
+//! anywhere between the two frictions. The limiter takes the middle of that
+//! interval ([`Friction`]), so the force is misread by at most half the
+//! friction; the ×1.05 reading of the load
+//! ([`crate::limiter::LimiterConfig::load_reading_factor`]) keeps such an
+//! error above the true load while half the friction is under 5 % of the
+//! load's share of the force. With 10 kN of friction and 3.3 t that holds
+//! below about 65° (half the friction is 2.5 % of the load at 40°, 3.9 % at
+//! 60°) and not above: 10 % at 80°, where the load has the shortest arm — a
+//! still boom there may read up to 5 % under the load, and only a friction
+//! measured at standstill would close that. Taking the conservative end
+//! instead read a 90 %-rated load at 80° at power-up as OVERLOAD (1.004).
 //!
 //! **A swinging load** pulls the tip sideways too: the piston force grows by
-//! per_kg·W·tan θ·tan φ ([`crate::swing`]), so the slope per kg is
-//! per_kg·(1 + tan θ·tan φ) with tan φ from the swing observer (0 without it).
+//! (F_model(W) − at_zero)·tan θ·tan φ ([`crate::swing`]), so the load part of
+//! F_model is scaled by (1 + tan θ·tan φ) with tan φ from the swing observer
+//! (0 without it).
+//!
+//! **Motion.** The model is evaluated at rest, and the motion enters as two
+//! corrections. The boom's angular acceleration θ̈ costs the cylinder
+//! J(θ)·θ̈ ([`HookLoadModel::piston_force_per_boom_accel`]): subtracted from
+//! the force (in the 10 s thesis moves the ramps reach 4–9 °/s², which is
+//! +14–17 % of a near-rated load when left in). The rate itself adds nothing
+//! the model should see: the boom's centripetal forces point through A0 and
+//! have no moment about it, and the load is not carried round with the tip,
+//! it hangs from the rope, so its pull is the swing correction's. (Evaluated
+//! with the rate, the model held the swing angle fixed and carried the load
+//! along: −2 % on the load in the 10 s moves, measured on the flexible model.)
 
 use crane_model::load_model::{BoomState, HookLoadModel};
 use crane_model::{ModelError, Real};
@@ -112,14 +135,27 @@ impl<T: Real> DirectionDetector<T> {
         self.current
     }
 
-    /// Direction whose friction is in the measured force now (see module doc).
-    pub fn friction_direction(&self) -> Direction {
+    /// The friction in the measured force now (see the module doc).
+    pub fn friction(&self) -> Friction {
         match (self.current, self.last_moving) {
-            (Direction::Still, Some(Direction::Up)) => Direction::Still,
-            (Direction::Still, _) => Direction::Down,
-            (moving, _) => moving,
+            (Direction::Up, _) => Friction::Sliding(Direction::Up),
+            (Direction::Down, _) => Friction::Sliding(Direction::Down),
+            (Direction::Still, last) => Friction::Static { last_moving: last },
         }
     }
+}
+
+/// The cylinder friction the measured force carries.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Friction {
+    /// Moving: the full friction of that direction (never `Still`).
+    Sliding(Direction),
+    /// Still: static friction, between zero and the friction of the last
+    /// motion (`None`: none seen since power-up, between the two).
+    Static {
+        /// Direction of the last motion.
+        last_moving: Option<Direction>,
+    },
 }
 
 /// What `crane-sim calibrate` learns (and a technician may adjust).
@@ -170,12 +206,28 @@ impl<T: Real> Calibration<T> {
             && self.friction_down_n >= T::lit(0.0)
     }
 
-    /// Signed friction (N) in the measured force for a direction.
+    /// Signed friction (N) in the measured force for a direction of motion.
     pub fn friction_n(&self, direction: Direction) -> T {
         match direction {
             Direction::Up => self.friction_up_n,
             Direction::Down => -self.friction_down_n,
             Direction::Still => T::lit(0.0),
+        }
+    }
+
+    /// The friction (N) the estimate removes: the sliding friction when
+    /// moving, the middle of the possible static friction when still (see
+    /// the module doc).
+    pub fn correction_n(&self, friction: Friction) -> T {
+        let half = T::lit(0.5);
+        match friction {
+            Friction::Sliding(d) => self.friction_n(d),
+            Friction::Static {
+                last_moving: Some(d),
+            } => self.friction_n(d) * half,
+            Friction::Static { last_moving: None } => {
+                (self.friction_n(Direction::Up) + self.friction_n(Direction::Down)) * half
+            }
         }
     }
 }
@@ -185,37 +237,43 @@ impl<T: Real> Calibration<T> {
 pub enum EstimateError {
     /// The model could not be evaluated at this state.
     Model(ModelError),
-    /// The model's piston force does not grow with the load (per_kg ≤ 0 or not
+    /// The model's piston force does not grow with the load (slope ≤ 0 or not
     /// finite): the load cannot be inferred from the force here.
     NotObservable,
 }
 
 /// Hook load (kg) from the filtered measured force (see the module doc).
-/// The force must already have the transducer offsets removed; `tan_swing`
-/// is tan φ of the load swing (0: hanging straight).
+/// The force must already have the transducer offsets removed; `boom` is the
+/// state at the force's instant, `accel_rad_s2` the boom's angular
+/// acceleration then, and `tan_swing` tan φ of the load swing (0: hanging
+/// straight).
 pub fn estimate_load_kg<T: Real, M: HookLoadModel<T>>(
     model: &M,
     boom: BoomState<T>,
+    accel_rad_s2: T,
     force_n: T,
     calibration: &Calibration<T>,
-    friction_direction: Direction,
+    friction: Friction,
     tan_swing: T,
 ) -> Result<T, EstimateError> {
-    let f = model.piston_force_n(boom).map_err(EstimateError::Model)?;
-    let per_kg = f.per_kg * (T::lit(1.0) + boom.angle_rad.tan() * tan_swing);
-    if !(per_kg.is_finite() && f.at_zero.is_finite() && per_kg > T::lit(0.0)) {
+    // At rest: see "Motion" in the module doc.
+    let at_rest = BoomState {
+        angle_rad: boom.angle_rad,
+        rate_rad_s: T::lit(0.0),
+    };
+    let f = model
+        .piston_force_n(at_rest)
+        .map_err(EstimateError::Model)?
+        .scale_load_part(T::lit(1.0) + boom.angle_rad.tan() * tan_swing);
+    let inertia = model
+        .piston_force_per_boom_accel(boom.angle_rad)
+        .map_err(EstimateError::Model)?
+        * accel_rad_s2;
+    if !(f.at_zero.is_finite() && inertia.is_finite()) {
         return Err(EstimateError::NotObservable);
     }
-    let w = (force_n
-        - calibration.force_offset_n
-        - calibration.friction_n(friction_direction)
-        - f.at_zero)
-        / per_kg;
-    if w.is_finite() {
-        Ok(w)
-    } else {
-        Err(EstimateError::NotObservable)
-    }
+    let force = force_n - inertia - calibration.force_offset_n - calibration.correction_n(friction);
+    f.solve(force).ok_or(EstimateError::NotObservable)
 }
 
 #[cfg(test)]
@@ -225,13 +283,34 @@ mod tests {
     #[test]
     fn direction_has_hysteresis_and_memory() {
         let mut d = DirectionDetector::new(DirectionThresholds::<f64>::standard());
-        assert_eq!(d.friction_direction(), Direction::Down);
+        assert_eq!(d.friction(), Friction::Static { last_moving: None });
         assert_eq!(d.update(0.1), Direction::Still);
         assert_eq!(d.update(0.2), Direction::Up);
         assert_eq!(d.update(0.1), Direction::Up); // above stop threshold
         assert_eq!(d.update(0.01), Direction::Still);
-        // Still after raising: no correction (the safe end of [0, friction_up]).
-        assert_eq!(d.friction_direction(), Direction::Still);
+        // Still after raising: static friction in [0, friction_up].
+        assert_eq!(
+            d.friction(),
+            Friction::Static {
+                last_moving: Some(Direction::Up)
+            }
+        );
         assert_eq!(d.update(-1.0), Direction::Down);
+        assert_eq!(d.friction(), Friction::Sliding(Direction::Down));
+    }
+
+    #[test]
+    fn static_friction_is_corrected_by_the_middle_of_its_interval() {
+        let cal = Calibration {
+            friction_up_n: 12.0,
+            friction_down_n: 8.0,
+            ..Calibration::<f64>::none()
+        };
+        let at = |last_moving| cal.correction_n(Friction::Static { last_moving });
+        assert_eq!(cal.correction_n(Friction::Sliding(Direction::Up)), 12.0);
+        assert_eq!(cal.correction_n(Friction::Sliding(Direction::Down)), -8.0);
+        assert_eq!(at(Some(Direction::Up)), 6.0);
+        assert_eq!(at(Some(Direction::Down)), -4.0);
+        assert_eq!(at(None), 2.0);
     }
 }

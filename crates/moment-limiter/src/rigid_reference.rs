@@ -12,7 +12,7 @@
 //! moments about the front jack (the tipping line) give the rear-jack reaction:
 //! F_A·s = G_chassis·(x_f − x_ch) + m_boom·g·(x_f − x_cg) − W·g·(x_C − x_f).
 
-use crane_model::load_model::{Affine, BoomState, HookLoadModel};
+use crane_model::load_model::{Affine, BoomState, HookLoadModel, Quadratic};
 use crane_model::{ModelError, Real};
 
 /// Parameters of the rigid stand-in (SI units).
@@ -84,13 +84,19 @@ impl<T: Real> RigidCrane<T> {
 }
 
 impl<T: Real> HookLoadModel<T> for RigidCrane<T> {
-    fn piston_force_n(&self, boom: BoomState<T>) -> Result<Affine<T>, ModelError> {
+    fn piston_force_n(&self, boom: BoomState<T>) -> Result<Quadratic<T>, ModelError> {
         let arm = self.cylinder_arm_m(boom.angle_rad)?;
         let gc = self.gravity * boom.angle_rad.cos() / arm;
-        Ok(Affine {
+        Ok(Quadratic::linear(Affine {
             at_zero: gc * self.boom_mass_kg * self.boom_cg_m,
             per_kg: gc * self.boom_length_m,
-        })
+        }))
+    }
+
+    /// A uniform boom of the stand-in's mass and length: m·L²/3 about A0.
+    fn piston_force_per_boom_accel(&self, boom_angle_rad: T) -> Result<T, ModelError> {
+        let arm = self.cylinder_arm_m(boom_angle_rad)?;
+        Ok(self.boom_mass_kg * self.boom_length_m * self.boom_length_m / (T::lit(3.0) * arm))
     }
 
     fn jack_reaction_n(&self, boom: BoomState<T>) -> Result<Affine<T>, ModelError> {

@@ -123,7 +123,10 @@ impl<T: Real> SwingObserver<T> {
                     T::lit(0.0)
                 };
                 // Sub-steps of at most 5 ms, at most 200 (a 1 s gap).
-                let n = (dt / T::lit(0.005)).ceil().max(T::lit(1.0)).min(T::lit(200.0));
+                let n = (dt / T::lit(0.005))
+                    .ceil()
+                    .max(T::lit(1.0))
+                    .min(T::lit(200.0));
                 let h = dt / n;
                 let (mut x, mut v) = (x, v);
                 let mut k = T::lit(1.0);
@@ -177,6 +180,10 @@ mod tests {
             prev = p;
         }
         let half = (crossings[crossings.len() - 1] - crossings[0]) / (crossings.len() - 1) as f64;
-        assert!((2.0 * half - period).abs() < 0.02, "{} vs {period}", 2.0 * half);
+        assert!(
+            (2.0 * half - period).abs() < 0.02,
+            "{} vs {period}",
+            2.0 * half
+        );
     }
 }

@@ -62,17 +62,35 @@ impl Manoeuvre {
         self.move_s + 2.0 * self.hold_s
     }
 
-    /// Noise-free pressures (p1, p2) in bar at time t.
+    /// Boom angular acceleration (deg/s²) at time t.
+    pub fn accel_at(&self, t: f64) -> f64 {
+        let x = (t - self.hold_s) / self.move_s;
+        let two_pi = 2.0 * core::f64::consts::PI;
+        if (0.0..1.0).contains(&x) {
+            (self.to_deg - self.from_deg) * two_pi * (two_pi * x).sin()
+                / (self.move_s * self.move_s)
+        } else {
+            0.0
+        }
+    }
+
+    /// Noise-free pressures (p1, p2) in bar at time t: the stand-in's static
+    /// force plus the boom's inertia.
     pub fn pressures_at(&self, model: &RigidCrane<f64>, t: f64) -> (f64, f64) {
         let (deg, rate) = self.angle_at(t);
         let boom = BoomState {
             angle_rad: deg.to_radians(),
             rate_rad_s: rate.to_radians(),
         };
+        let inertia = model
+            .piston_force_per_boom_accel(boom.angle_rad)
+            .expect("stand-in model")
+            * self.accel_at(t).to_radians();
         let f = model
             .piston_force_n(boom)
             .expect("stand-in model")
-            .at(self.load_kg);
+            .at(self.load_kg)
+            + inertia;
         let (f, p2) = if rate > 1e-6 {
             (f + self.friction_up_n, 5.0)
         } else if rate < -1e-6 {
