@@ -6,7 +6,9 @@
 //! at 100 Hz, written as CSV lines and read back by the limiter's own log
 //! parser, then run through `moment_limiter`'s limiter calibrated from two
 //! unloaded runs (10 s cycloidal up and down, other noise seeds), as
-//! `crane-sim calibrate` does.
+//! `crane-sim calibrate` does. Each test runs twice: in f64 with the model
+//! built in process, and (`_f32`) in f32 with the shipped mode constants, the
+//! limiter the controller and `crane-sim replay` run.
 //!
 //! Definitions:
 //! - **loads**: W = 0, 3300 kg (the thesis's) and "near-rated" = 90 % of the
@@ -37,12 +39,13 @@ mod synth_core;
 
 use std::sync::OnceLock;
 
-use crane_model::load_model::BoomState;
+use crane_model::load_model::{BoomState, HookLoadModel};
 use crane_model::modal::{MeshRefinement, THESIS_BASIS};
 use crane_model::multibody::ThesisModel;
 use crane_model::profile::RampShape;
 use crane_model::simulation::{thesis_cases, Direction, Maneuver};
-use crane_model::CraneData;
+use crane_model::thesis_modes::thesis_load_model_f32;
+use crane_model::{CraneData, Real};
 use moment_limiter::calibration::CalibrationLearner;
 use moment_limiter::capacity::Capacity;
 use moment_limiter::limiter::{Frame, Limiter, LimiterConfig};
@@ -80,39 +83,34 @@ fn rows(m: &Maneuver, seed: u32) -> Vec<SynthRow> {
 }
 
 /// The rows as the replay reads them: CSV text through the log parser.
-fn frames(rows: &[SynthRow]) -> Vec<Frame<f64>> {
-    let mut p = LogParser::<f64>::new();
+fn frames<T: Real>(rows: &[SynthRow]) -> Vec<Frame<T>> {
+    let mut p = LogParser::<T>::new();
     assert!(p.feed_line(LOG_HEADER).expect("header").is_none());
     rows.iter()
         .map(|r| p.feed_line(&r.csv_line()).expect("row").expect("record").frame)
         .collect()
 }
 
-fn calibration() -> Calibration<f64> {
-    static C: OnceLock<Calibration<f64>> = OnceLock::new();
-    *C.get_or_init(|| {
-        let mut learner = CalibrationLearner::new();
-        for (dir, seed) in [(Direction::Up, 11), (Direction::Down, 12)] {
-            let m = Maneuver::thesis(0.0, 10.0, RampShape::Cycloidal, dir).unwrap();
-            let mut lim = Limiter::new(*model(), LimiterConfig::standard()).unwrap();
-            for f in frames(&rows(&m, seed)) {
-                let r = lim.step_frame(&f);
-                if let (None, Some(me)) = (r.fault, r.measurement) {
-                    learner.observe(model(), &me).unwrap();
-                }
+/// The calibration `crane-sim calibrate` would learn with this limiter model
+/// from two unloaded runs (10 s cycloidal up and down).
+fn calibration_with<T: Real, M: HookLoadModel<T> + Clone>(model: &M) -> Calibration<T> {
+    let mut learner = CalibrationLearner::new();
+    for (dir, seed) in [(Direction::Up, 11), (Direction::Down, 12)] {
+        let m = Maneuver::thesis(0.0, 10.0, RampShape::Cycloidal, dir).unwrap();
+        let mut lim = Limiter::new(model.clone(), LimiterConfig::standard()).unwrap();
+        for f in frames::<T>(&rows(&m, seed)) {
+            let r = lim.step_frame(&f);
+            if let (None, Some(me)) = (r.fault, r.measurement) {
+                learner.observe(model, &me).unwrap();
             }
-            learner.end_of_log();
         }
-        let (up, down) = learner.mean_residuals_n().unwrap();
-        println!("calibration: mean residual up {up:.0} N, down {down:.0} N (injected +12000 / -8000)");
-        assert!((up - 12_000.0).abs() < 500.0 && (down + 8_000.0).abs() < 500.0);
-        learner.finish(50).unwrap()
-    })
-}
-
-fn limiter() -> Limiter<f64, ThesisModel<f64>> {
-    let config = LimiterConfig { calibration: calibration(), ..LimiterConfig::standard() };
-    Limiter::new(*model(), config).unwrap()
+        learner.end_of_log();
+    }
+    let (up, down) = learner.mean_residuals_n().unwrap();
+    let (up, down) = (up.to_f64(), down.to_f64());
+    println!("calibration: mean residual up {up:.0} N, down {down:.0} N (injected +12000 / -8000)");
+    assert!((up - 12_000.0).abs() < 500.0 && (down + 8_000.0).abs() < 500.0);
+    learner.finish(50).unwrap()
 }
 
 /// One run: per sample (maneuver time, true angle, estimate, utilization, state).
@@ -122,20 +120,42 @@ struct Run {
     samples: Vec<(f64, f64, f64, f64, LimiterState)>,
 }
 
-fn run(name: String, m: Maneuver, seed: u32) -> Run {
+fn run_with<T: Real, M: HookLoadModel<T> + Clone>(
+    model: &M,
+    calibration: Calibration<T>,
+    name: String,
+    m: Maneuver,
+    seed: u32,
+) -> Run {
     let rows = rows(&m, seed);
-    let mut lim = limiter();
+    let config = LimiterConfig { calibration, ..LimiterConfig::standard() };
+    let mut lim = Limiter::new(model.clone(), config).unwrap();
     let samples = rows
         .iter()
-        .zip(frames(&rows))
+        .zip(frames::<T>(&rows))
         .map(|(r, f)| {
             let rep = lim.step_frame(&f);
             let e = rep.estimate.expect("estimate on a clean log");
             let t = if r.t_s < 1.0 - 1e-9 { r.t_s - 1.0 } else { r.truth.t_s };
-            (t, r.truth.boom_angle_rad, e.load_kg, e.utilization, rep.state)
+            (t, r.truth.boom_angle_rad, e.load_kg.to_f64(), e.utilization.to_f64(), rep.state)
         })
         .collect();
     Run { name, maneuver: m, samples }
+}
+
+/// The limiter as the host runs it: f64, the model built in process.
+fn run(name: String, m: Maneuver, seed: u32) -> Run {
+    static C: OnceLock<Calibration<f64>> = OnceLock::new();
+    let cal = *C.get_or_init(|| calibration_with(model()));
+    run_with(model(), cal, name, m, seed)
+}
+
+/// The limiter as the controller runs it: f32, the shipped mode constants
+/// (`thesis_load_model_f32`, as the firmware and `crane-sim replay` use).
+fn run_f32(name: String, m: Maneuver, seed: u32) -> Run {
+    static C: OnceLock<Calibration<f32>> = OnceLock::new();
+    let cal = *C.get_or_init(|| calibration_with(&thesis_load_model_f32()));
+    run_with(&thesis_load_model_f32(), cal, name, m, seed)
 }
 
 fn near_rated_kg() -> f64 {
@@ -143,25 +163,32 @@ fn near_rated_kg() -> f64 {
 }
 
 /// The suite: every thesis (duration, shape, direction) × {0, 3300, near-rated}.
+fn suite_with(run: fn(String, Maneuver, u32) -> Run) -> Vec<Run> {
+    let mut seen = Vec::new();
+    let mut runs = Vec::new();
+    for (_, m) in thesis_cases() {
+        let key = (m.t3_s as u32, m.shape, m.direction);
+        if seen.contains(&key) {
+            continue;
+        }
+        seen.push(key);
+        for (i, w) in [0.0, 3300.0, near_rated_kg()].into_iter().enumerate() {
+            let m = Maneuver { load_kg: w, ..m };
+            let name = format!("{:.0}s {:?} {:?} W={w:.0}", m.t3_s, m.shape, m.direction);
+            runs.push(run(name, m, 100 + i as u32));
+        }
+    }
+    runs
+}
+
 fn suite() -> &'static [Run] {
     static S: OnceLock<Vec<Run>> = OnceLock::new();
-    S.get_or_init(|| {
-        let mut seen = Vec::new();
-        let mut runs = Vec::new();
-        for (_, m) in thesis_cases() {
-            let key = (m.t3_s as u32, m.shape, m.direction);
-            if seen.contains(&key) {
-                continue;
-            }
-            seen.push(key);
-            for (i, w) in [0.0, 3300.0, near_rated_kg()].into_iter().enumerate() {
-                let m = Maneuver { load_kg: w, ..m };
-                let name = format!("{:.0}s {:?} {:?} W={w:.0}", m.t3_s, m.shape, m.direction);
-                runs.push(run(name, m, 100 + i as u32));
-            }
-        }
-        runs
-    })
+    S.get_or_init(|| suite_with(run))
+}
+
+fn suite_f32() -> &'static [Run] {
+    static S: OnceLock<Vec<Run>> = OnceLock::new();
+    S.get_or_init(|| suite_with(run_f32))
 }
 
 /// (min, max) of estimated/true (or |estimate|/rated for W = 0) in the window.
@@ -179,10 +206,10 @@ fn band(r: &Run) -> (f64, f64) {
     (lo, hi)
 }
 
-fn check_band(duration: f64) {
+fn check_band(suite: &[Run], duration: f64) {
     let mut failures = Vec::new();
     let (mut lo_all, mut hi_all) = (f64::INFINITY, f64::NEG_INFINITY);
-    for r in suite().iter().filter(|r| r.maneuver.t3_s == duration) {
+    for r in suite.iter().filter(|r| r.maneuver.t3_s == duration) {
         let (lo, hi) = band(r);
         let ok = if r.maneuver.load_kg > 0.0 {
             lo_all = lo_all.min(lo);
@@ -203,18 +230,27 @@ fn check_band(duration: f64) {
 
 #[test]
 fn estimate_within_100_110_percent_outside_ramps_30s() {
-    check_band(30.0);
+    check_band(suite(), 30.0);
+}
+
+#[test]
+fn estimate_within_100_110_percent_outside_ramps_30s_f32() {
+    check_band(suite_f32(), 30.0);
 }
 
 #[test]
 fn estimate_within_100_110_percent_outside_ramps_10s() {
-    check_band(10.0);
+    check_band(suite(), 10.0);
 }
 
 #[test]
-fn no_overload_while_true_utilization_below_95_percent() {
+fn estimate_within_100_110_percent_outside_ramps_10s_f32() {
+    check_band(suite_f32(), 10.0);
+}
+
+fn check_no_false_overload(suite: &[Run]) {
     let mut failures = Vec::new();
-    for r in suite() {
+    for r in suite {
         let true_max = r.maneuver.load_kg / rated_kg(40f64.to_radians());
         assert!(true_max < 0.95);
         let first = r.samples.iter().find(|s| s.4 == LimiterState::Overload);
@@ -228,7 +264,26 @@ fn no_overload_while_true_utilization_below_95_percent() {
 }
 
 #[test]
+fn no_overload_while_true_utilization_below_95_percent() {
+    check_no_false_overload(suite());
+}
+
+#[test]
+fn no_overload_while_true_utilization_below_95_percent_f32() {
+    check_no_false_overload(suite_f32());
+}
+
+#[test]
 fn overload_within_0_2_s_when_lowering_past_the_rated_radius() {
+    check_overload_delay(run);
+}
+
+#[test]
+fn overload_within_0_2_s_when_lowering_past_the_rated_radius_f32() {
+    check_overload_delay(run_f32);
+}
+
+fn check_overload_delay(run: fn(String, Maneuver, u32) -> Run) {
     let w = rated_kg(55f64.to_radians());
     let mut worst: f64 = f64::NEG_INFINITY;
     let mut failures = Vec::new();
