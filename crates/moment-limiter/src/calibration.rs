@@ -33,11 +33,11 @@
 //! offsets (bar) and the pendulum offset are not learned (0); a technician
 //! may set them in the calibration file.
 
-use crane_model::load_model::{BoomState, HookLoadModel};
+use crane_model::load_model::HookLoadModel;
 use crane_model::{ModelError, Real};
 
 use crate::limiter::Measurement;
-use crate::load_estimate::{Calibration, Direction};
+use crate::load_estimate::{model_force_terms, Calibration, Direction};
 
 /// Why no calibration could be learned.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -164,15 +164,8 @@ impl<T: Real> CalibrationLearner<T> {
                 return Ok(());
             }
         }
-        // The same model terms as the estimate (load_estimate, "Motion").
-        let at_rest = BoomState {
-            angle_rad: m.boom.angle_rad,
-            rate_rad_s: T::lit(0.0),
-        };
-        let inertia =
-            model.piston_force_per_boom_accel(m.boom.angle_rad)? * m.accel_deg_s2 * T::pi()
-                / T::lit(180.0);
-        let r = m.piston_force_n - inertia - model.piston_force_n(at_rest)?.at_zero;
+        let (f, inertia) = model_force_terms(model, m.boom.angle_rad, m.accel_rad_s2())?;
+        let r = m.piston_force_n - inertia - f.at_zero;
         let now = m.moving_for_s;
         while let Some(&(t, _, _)) = self.pending.front() {
             if now - t < self.steady.lookahead_s && !self.pending.is_full() {

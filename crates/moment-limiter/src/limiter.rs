@@ -232,6 +232,13 @@ pub struct Measurement<T> {
     pub tan_swing: T,
 }
 
+impl<T: Real> Measurement<T> {
+    /// The angular acceleration in rad/s², as the model takes it.
+    pub fn accel_rad_s2(&self) -> T {
+        self.accel_deg_s2 * T::pi() / T::lit(180.0)
+    }
+}
+
 /// Load, capacity and utilization of one cycle.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Estimate<T> {
@@ -627,7 +634,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         let load_kg = estimate_load_kg(
             &self.model,
             m.boom,
-            m.accel_deg_s2 * T::pi() / T::lit(180.0),
+            m.accel_rad_s2(),
             m.piston_force_n,
             &self.config.calibration,
             m.friction,

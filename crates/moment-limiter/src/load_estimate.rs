@@ -45,7 +45,7 @@
 //! with the rate, the model held the swing angle fixed and carried the load
 //! along: −2 % on the load in the 10 s moves, measured on the flexible model.)
 
-use crane_model::load_model::{BoomState, HookLoadModel};
+use crane_model::load_model::{BoomState, HookLoadModel, Quadratic};
 use crane_model::{ModelError, Real};
 
 /// Direction of boom motion, from the filtered angle rate.
@@ -242,6 +242,24 @@ pub enum EstimateError {
     NotObservable,
 }
 
+/// The model's terms of the load equation at boom angle `angle_rad` turning
+/// with angular acceleration `accel_rad_s2` (see "Motion" in the module doc):
+/// the piston force at rest as a function of W, and the force the boom's
+/// acceleration costs. Shared by the estimate and the calibration learner so
+/// that both see the same model.
+pub fn model_force_terms<T: Real, M: HookLoadModel<T>>(
+    model: &M,
+    angle_rad: T,
+    accel_rad_s2: T,
+) -> Result<(Quadratic<T>, T), ModelError> {
+    let at_rest = BoomState {
+        angle_rad,
+        rate_rad_s: T::lit(0.0),
+    };
+    let inertia = model.piston_force_per_boom_accel(angle_rad)? * accel_rad_s2;
+    Ok((model.piston_force_n(at_rest)?, inertia))
+}
+
 /// Hook load (kg) from the filtered measured force (see the module doc).
 /// The force must already have the transducer offsets removed; `boom` is the
 /// state at the force's instant, `accel_rad_s2` the boom's angular
@@ -256,19 +274,9 @@ pub fn estimate_load_kg<T: Real, M: HookLoadModel<T>>(
     friction: Friction,
     tan_swing: T,
 ) -> Result<T, EstimateError> {
-    // At rest: see "Motion" in the module doc.
-    let at_rest = BoomState {
-        angle_rad: boom.angle_rad,
-        rate_rad_s: T::lit(0.0),
-    };
-    let f = model
-        .piston_force_n(at_rest)
-        .map_err(EstimateError::Model)?
-        .scale_load_part(T::lit(1.0) + boom.angle_rad.tan() * tan_swing);
-    let inertia = model
-        .piston_force_per_boom_accel(boom.angle_rad)
-        .map_err(EstimateError::Model)?
-        * accel_rad_s2;
+    let (f, inertia) =
+        model_force_terms(model, boom.angle_rad, accel_rad_s2).map_err(EstimateError::Model)?;
+    let f = f.scale_load_part(T::lit(1.0) + boom.angle_rad.tan() * tan_swing);
     if !(f.at_zero.is_finite() && inertia.is_finite()) {
         return Err(EstimateError::NotObservable);
     }
