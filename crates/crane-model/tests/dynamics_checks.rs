@@ -12,6 +12,9 @@ use crane_model::simulation::{thesis_cases, Direction, Maneuver, SimulationOptio
 use crane_model::Real;
 use std::f64::consts::PI;
 
+mod common;
+use common::{dims_at, hollow};
+
 fn model() -> ThesisModel<f64> {
     ThesisModel::<f64>::build(
         &CraneData::coles_mobile_930(),
@@ -58,37 +61,6 @@ fn maneuver(load: f64, duration: f64, shape: RampShape, dir: Direction) -> Maneu
 // The independent quasi-static reference: virtual work of all weights.
 // ---------------------------------------------------------------------------
 
-/// Area and second moment of the hollow octagon (shoelace formulas on its 8
-/// vertices; inner edges shortened by 2t·tan 22.5°), independent of section.rs.
-fn hollow_octagon(e: f64, c: f64, f: f64, t: f64) -> (f64, f64) {
-    let solid = |e: f64, c: f64, f: f64| {
-        let a = c * core::f64::consts::FRAC_1_SQRT_2;
-        let (w, h) = (2.0 * a + e, 2.0 * a + f);
-        let v = [
-            (e / 2.0, h / 2.0),
-            (-e / 2.0, h / 2.0),
-            (-w / 2.0, f / 2.0),
-            (-w / 2.0, -f / 2.0),
-            (-e / 2.0, -h / 2.0),
-            (e / 2.0, -h / 2.0),
-            (w / 2.0, -f / 2.0),
-            (w / 2.0, f / 2.0),
-        ];
-        let (mut ar, mut ix) = (0.0, 0.0);
-        for i in 0..8 {
-            let ((x0, y0), (x1, y1)) = (v[i], v[(i + 1) % 8]);
-            let cr = x0 * y1 - x1 * y0;
-            ar += cr / 2.0;
-            ix += cr * (y0 * y0 + y0 * y1 + y1 * y1) / 12.0;
-        }
-        (ar, ix)
-    };
-    let cut = 2.0 * t * (PI / 8.0).tan();
-    let (ao, io) = solid(e, c, f);
-    let (ai, ii) = solid(e - cut, c - cut, f - cut);
-    (ao - ai, io - ii)
-}
-
 /// The crane's weights and geometry, from the thesis data only (SPEC §2).
 struct QuasiStatic {
     crane: CraneData,
@@ -112,18 +84,7 @@ impl QuasiStatic {
             .collect();
         let (mut area, mut ei) = (Vec::new(), Vec::new());
         for &xi in &x {
-            let (p, q, s) = if xi <= b.foot_to_g_m {
-                (b.section_at_foot, b.section_at_g, xi / b.foot_to_g_m)
-            } else {
-                (
-                    b.section_at_g,
-                    b.section_at_tip,
-                    (xi - b.foot_to_g_m) / b.g_to_tip_m,
-                )
-            };
-            let l = |u: f64, v: f64| u + (v - u) * s;
-            let (a, i) =
-                hollow_octagon(l(p.e_m, q.e_m), l(p.c_m, q.c_m), l(p.f_m, q.f_m), b.wall_m);
+            let (a, i) = hollow(dims_at(&b, xi), b.wall_m);
             area.push(a);
             ei.push(b.youngs_modulus_pa * i);
         }
