@@ -10,6 +10,9 @@ use std::process::ExitCode;
 mod cmd;
 mod model;
 mod plot;
+mod progress;
+mod rating;
+mod replay_report;
 
 #[derive(Parser)]
 #[command(
