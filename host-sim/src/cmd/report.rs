@@ -43,6 +43,7 @@ pub fn run(args: ReportArgs) -> Result<u8> {
             }
             std::fs::write(args.out.join(format!("{name}.csv")), csv)?;
             plot_run(&args.out.join(format!("{name}.svg")), name, &samples)?;
+            plot_run(&args.out.join(format!("{name}.png")), name, &samples)?;
             bar.inc(1);
             bar.set_message(name.to_string());
             let peak = samples.iter().map(|s| s.reactions.piston_force_n).fold(f64::MIN, f64::max);
@@ -77,7 +78,7 @@ pub fn run(args: ReportArgs) -> Result<u8> {
     html.push_str("</table>");
     html.push_str(&limiter_html);
     for (name, _) in &cases {
-        let _ = write!(html, "<h2 id=\"{name}\">{name}</h2><p><a href=\"{name}.csv\">CSV</a></p><img src=\"{name}.svg\" alt=\"{name}\">");
+        let _ = write!(html, "<h2 id=\"{name}\">{name}</h2><p><a href=\"{name}.csv\">CSV</a> · <a href=\"{name}.png\">PNG</a></p><img src=\"{name}.svg\" alt=\"{name}\">");
     }
     html.push_str("</body></html>\n");
     std::fs::write(args.out.join("index.html"), html)?;
