@@ -175,6 +175,13 @@ fn bounds(panel: &Panel) -> (f64, f64, f64, f64) {
     (x0, x1, y0, y1)
 }
 
+/// A tick label without trailing zeros ("140", "2.5", "0.25").
+fn tick(v: f64) -> String {
+    let s = format!("{v:.3}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" { "0".into() } else { s.into() }
+}
+
 /// Writes panels stacked vertically into one figure: PNG if `path` ends in
 /// `.png`, SVG if it ends in `.svg` (any case); any other extension is an error.
 pub fn write_figure(path: &Path, panels: &[Panel]) -> Result<()> {
@@ -217,7 +224,10 @@ where
             .y_desc(panel.y_label)
             .label_style(("sans-serif", 14))
             .axis_desc_style(("sans-serif", 15))
-            .light_line_style(RGBColor(235, 235, 235))
+            .light_line_style(RGBColor(240, 240, 240))
+            .max_light_lines(4)
+            .x_label_formatter(&|v| tick(*v))
+            .y_label_formatter(&|v| tick(*v))
             .draw()
             .map_err(e)?;
         for (kind, &(label, color)) in panel.band_kinds.iter().enumerate() {

@@ -160,12 +160,19 @@ fn write_figures(dir: &Path, samples: &[ReplaySample]) -> Result<()> {
     panel.legend = SeriesLabelPosition::LowerRight;
     write_svg_and_png(dir, "load", &[panel])?;
 
-    // Utilization in %, clipped at 150 % (the limiter reports up to 1000 %
-    // when the rated load is near zero, which would flatten the rest).
-    let top = samples.iter().filter_map(|s| s.utilization).fold(0.0f32, f32::max).clamp(1.1, 1.5) * 105.0;
+    // Utilization in %: up to the highest seen, but clipped at 300 % (the
+    // limiter reports up to 1000 % when the rated load is near zero, which
+    // would flatten everything else); the title says when it is clipped.
+    let max_u = samples.iter().filter_map(|s| s.utilization).fold(0.0f32, f32::max) * 100.0;
+    let top = max_u.clamp(110.0, 300.0) * 1.05;
     let util = series(samples, |s| s.utilization.map(|u| (u * 100.0).min(top)));
+    let title = if max_u * 1.05 > top {
+        format!("Utilization (load as read / rated load) and the limiter's state — clipped at {top:.0} % (max {max_u:.0} %)")
+    } else {
+        "Utilization (load as read / rated load) and the limiter's state".to_string()
+    };
     let mut panel = Panel::new(
-        "Utilization (load as read / rated load) and the limiter's state",
+        &title,
         t,
         "utilization (%)",
         vec![Series::line("utilization", &util).color(PALETTE[3])],
@@ -236,12 +243,16 @@ pub fn write_replay_report(
     let _ = write!(
         h,
         "<!doctype html><html lang=\"en\"><head><meta charset=\"utf-8\"><title>Replay of {log}</title><style>{PAGE_STYLE}</style></head><body>\
-         <h1>Replay of <code>{log}</code></h1>"
+         <h1>Replay of <code>{log}</code></h1>\
+         <p>Every sample of the log run through the load moment limiter (the controller's code and its f32 model). \
+         WARNING from 90 % utilization, OVERLOAD from 100 %, FAULT when a sensor, the model or an output fails; \
+         OVERLOAD and FAULT cut the moment-increasing motions (boom down, hoist up).</p>"
     );
-    let verdict = match (error, summary.entered_cut_state) {
-        (Some(_), _) => "the log could not be read to its end (exit 1)",
-        (None, true) => "the limiter entered OVERLOAD or FAULT (exit 2)",
-        (None, false) => "the limiter never entered OVERLOAD or FAULT (exit 0)",
+    let first_cut = events.iter().find(|e| e.state.cuts());
+    let verdict = match (error, first_cut) {
+        (Some(_), _) => "the log could not be read to its end (exit 1)".to_string(),
+        (None, Some(e)) => format!("entered {} at {:.3} s: motions cut (exit 2)", e.state.as_str(), e.t_s),
+        (None, None) => "never entered OVERLOAD or FAULT (exit 0)".to_string(),
     };
     let first = samples.first().map_or(0.0, |s| s.t_s);
     let last = samples.last().map_or(0.0, |s| s.t_s);
@@ -275,7 +286,7 @@ pub fn write_replay_report(
     h.push_str("</table>");
     for (stem, caption) in [
         ("utilization", "Utilization with the 90 % (WARNING) and 100 % (OVERLOAD) lines; the background is the state the limiter was in."),
-        ("load", "The hook load as the limiter reads it (×1.05, SAE J376), the true load when the log has it, and the rated load at the boom's angle."),
+        ("load", "The hook load as the limiter reads it (×1.05, SAE J376), the true load when the log has it, and the rated load at the boom's angle (tipping load / 1.5, at most the crane's 10 t)."),
         ("signals", "The sensor signals exactly as recorded in the log."),
     ] {
         let _ = write!(
