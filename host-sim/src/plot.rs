@@ -105,14 +105,14 @@ pub struct Panel<'a> {
     pub band_kinds: Vec<(&'a str, RGBColor)>,
     /// Fixed y range; `None` fits the data.
     pub y_range: Option<(f64, f64)>,
-    /// Where the legend goes (pick the corner the curves leave free).
-    pub legend: SeriesLabelPosition,
+    /// Where the legend goes; `None` picks the corner the curves leave freest.
+    pub legend: Option<SeriesLabelPosition>,
 }
 
 impl<'a> Panel<'a> {
     /// A panel of curves, range fitted to the data.
     pub fn new(title: &'a str, x_label: &'a str, y_label: &'a str, series: Vec<Series<'a>>) -> Self {
-        Self { title, x_label, y_label, series, hlines: Vec::new(), bands: Vec::new(), band_kinds: Vec::new(), y_range: None, legend: SeriesLabelPosition::UpperRight }
+        Self { title, x_label, y_label, series, hlines: Vec::new(), bands: Vec::new(), band_kinds: Vec::new(), y_range: None, legend: None }
     }
 }
 
@@ -135,10 +135,14 @@ fn ensure_font() -> Result<()> {
 
 fn bounds(panel: &Panel) -> (f64, f64, f64, f64) {
     let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+    // x from every point with a finite x (a gap still spans time), y from
+    // the finite values only.
     let mut take = |x: f64, y: f64| {
-        if x.is_finite() && y.is_finite() {
+        if x.is_finite() {
             x0 = x0.min(x);
             x1 = x1.max(x);
+        }
+        if x.is_finite() && y.is_finite() {
             y0 = y0.min(y);
             y1 = y1.max(y);
         }
@@ -151,6 +155,9 @@ fn bounds(panel: &Panel) -> (f64, f64, f64, f64) {
     for b in &panel.bands {
         take(b.x0, f64::NAN);
         take(b.x1, f64::NAN);
+    }
+    if y0 > y1 {
+        (y0, y1) = (0.0, 1.0);
     }
     if x0 > x1 {
         (x0, x1, y0, y1) = (0.0, 1.0, 0.0, 1.0);
@@ -173,6 +180,36 @@ fn bounds(panel: &Panel) -> (f64, f64, f64, f64) {
     let (x0, x1) = pad(x0, x1, 0.0);
     let (y0, y1) = if panel.y_range.is_some() { (y0, y1) } else { pad(y0, y1, 0.05) };
     (x0, x1, y0, y1)
+}
+
+/// The corner of the plot with the fewest curve points under where the
+/// legend would go (about a third of the width and of the height).
+fn free_corner(panel: &Panel, (x0, x1, y0, y1): (f64, f64, f64, f64)) -> SeriesLabelPosition {
+    use SeriesLabelPosition::{LowerLeft, LowerRight, MiddleRight, UpperLeft, UpperRight};
+    let (w, h) = (x1 - x0, y1 - y0);
+    let rows = 2 + panel.series.len() + panel.hlines.len() + panel.band_kinds.len();
+    // The box's share of the height grows with its number of rows.
+    let fh = (0.09 * rows as f64).min(0.6);
+    let corners = [
+        (UpperRight, (0.62, 1.0), (1.0 - fh, 1.0)),
+        (LowerRight, (0.62, 1.0), (0.0, fh)),
+        (UpperLeft, (0.0, 0.38), (1.0 - fh, 1.0)),
+        (LowerLeft, (0.0, 0.38), (0.0, fh)),
+        (MiddleRight, (0.62, 1.0), (0.5 - fh / 2.0, 0.5 + fh / 2.0)),
+    ];
+    let crowding = |(fx, fy): ((f64, f64), (f64, f64))| {
+        let inside = |&(x, y): &(f64, f64)| {
+            let (u, v) = ((x - x0) / w, (y - y0) / h);
+            u >= fx.0 && u <= fx.1 && v >= fy.0 && v <= fy.1
+        };
+        let points: usize = panel.series.iter().map(|s| s.points.iter().filter(|p| inside(p)).count()).sum();
+        let lines = panel.hlines.iter().filter(|l| inside(&(x0 + fx.0 * w, l.y))).count();
+        points + 50 * lines
+    };
+    corners
+        .into_iter()
+        .min_by_key(|&(_, fx, fy)| crowding((fx, fy)))
+        .map_or(UpperRight, |(pos, _, _)| pos)
 }
 
 /// A tick label without trailing zeros ("140", "2.5", "0.25").
@@ -294,7 +331,7 @@ where
         }
         chart
             .configure_series_labels()
-            .position(panel.legend.clone())
+            .position(panel.legend.clone().unwrap_or_else(|| free_corner(panel, (x0, x1, y0, y1))))
             .label_font(("sans-serif", 14))
             .background_style(WHITE.mix(0.85))
             .border_style(BLACK)

@@ -14,7 +14,6 @@ use moment_limiter::limiter::StepReport;
 use moment_limiter::log_format::{LogError, Record};
 use moment_limiter::replay::{ReplayEvent, ReplaySummary};
 use moment_limiter::state_machine::LimiterState;
-use plotters::chart::SeriesLabelPosition;
 use plotters::style::RGBColor;
 use std::fmt::Write as _;
 use std::io::Write as _;
@@ -135,13 +134,12 @@ fn write_figures(dir: &Path, samples: &[ReplaySample]) -> Result<()> {
     let p1 = series(samples, |s| Some(s.p1_bar));
     let p2 = series(samples, |s| Some(s.p2_bar));
     let angle = series(samples, |s| Some(s.angle_deg));
-    let mut pressures = Panel::new(
+    let pressures = Panel::new(
         "Cylinder pressures as recorded",
         t,
         "pressure (bar)",
         vec![Series::line("p1 (piston side)", &p1).color(PALETTE[0]), Series::line("p2 (rod side)", &p2).color(PALETTE[5])],
     );
-    pressures.legend = SeriesLabelPosition::MiddleRight;
     let angles = Panel::new("Boom angle as recorded", t, "boom angle θ1 (deg)", vec![Series::line("pendulum angle", &angle).color(PALETTE[4])]);
     write_svg_and_png(dir, "signals", &[pressures, angles])?;
 
@@ -157,7 +155,6 @@ fn write_figures(dir: &Path, samples: &[ReplaySample]) -> Result<()> {
     let top_t = [&load, &rated, &truth].iter().flat_map(|c| c.iter().map(|p| p.1)).filter(|y| y.is_finite()).fold(1.0f64, f64::max);
     let mut panel = Panel::new("Hook load and rated load", t, "load on the hook (t)", curves);
     panel.y_range = Some((0.0, top_t * 1.1));
-    panel.legend = SeriesLabelPosition::LowerRight;
     write_svg_and_png(dir, "load", &[panel])?;
 
     // Utilization in %: up to the highest seen, but clipped at 300 % (the
@@ -184,7 +181,6 @@ fn write_figures(dir: &Path, samples: &[ReplaySample]) -> Result<()> {
     panel.bands = state_bands(samples);
     panel.band_kinds = STATES.iter().map(|&(_, name, color)| (name, color)).collect();
     panel.y_range = Some((0.0, f64::from(top)));
-    panel.legend = SeriesLabelPosition::LowerRight;
     write_svg_and_png(dir, "utilization", &[panel])
 }
 
