@@ -27,7 +27,7 @@ use super::replay::{read_line, CalibrationFile};
 /// Arguments of `crane-sim calibrate`.
 #[derive(clap::Args, Debug)]
 pub struct CalibrateArgs {
-    /// Unloaded logs (SPEC §5 format): at least one boom-up and one boom-down run.
+    /// Unloaded logs (docs/log-format.md): at least one boom-up and one boom-down run.
     #[arg(required = true)]
     pub logs: Vec<PathBuf>,
     /// Where to write the calibration (JSON).

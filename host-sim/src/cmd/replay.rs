@@ -45,6 +45,10 @@ pub struct ReplayArgs {
     /// Write a per-sample CSV trace `t_s,load_kg,rated_load_kg,utilization,state`.
     #[arg(long)]
     pub trace: Option<PathBuf>,
+    /// Write an HTML page with the replay's figures (SVG and PNG), its events
+    /// and every sample into DIR (created if missing; opens offline).
+    #[arg(long, value_name = "DIR")]
+    pub report: Option<PathBuf>,
 }
 
 /// The crane model the host tools (replay, calibrate) run the limiter on.
@@ -144,6 +148,9 @@ pub fn read_line<R: BufRead>(
 pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
     let file =
         File::open(&args.log).with_context(|| format!("cannot open log {}", args.log.display()))?;
+    if let Some(dir) = &args.report {
+        std::fs::create_dir_all(dir).with_context(|| format!("cannot create report directory {}", dir.display()))?;
+    }
     let mut config = LimiterConfig::standard();
     if let Some(path) = &args.calibration {
         config.calibration = load_calibration(path)?;
@@ -165,6 +172,8 @@ pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
     let mut replay = Replay::new(limiter);
     let mut parser = LogParser::<f32>::new();
     let mut events: Vec<ReplayEvent<f32>> = Vec::new();
+    let mut progress = crate::progress::ReplayProgress::new(file.metadata().map_or(0, |m| m.len()));
+    let mut recording = args.report.as_ref().map(|_| crate::replay_report::ReplayRecording::default());
     let mut reader = BufReader::new(file);
     let mut buf = Vec::new();
     let stdout = std::io::stdout();
@@ -173,7 +182,10 @@ pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
 
     let error: Option<LogError> = loop {
         let line = match read_line(&mut reader, &mut buf) {
-            Ok(Some(line)) => line,
+            Ok(Some(line)) => {
+                progress.advance(line.len() + 1);
+                line
+            }
             Ok(None) => break parser.finish().err(),
             Err(kind) => break Some(parser.reject_next_line(kind)),
         };
@@ -183,6 +195,9 @@ pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
             Err(e) => break Some(e),
         };
         let (report, event) = replay.feed(&record);
+        if let Some(r) = recording.as_mut() {
+            r.push(&record, &report);
+        }
         if let Some(w) = trace.as_mut() {
             text.clear();
             replay::write_trace_line(&mut text, &report)?;
@@ -198,6 +213,7 @@ pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
         }
     };
 
+    progress.finish();
     if let Some(mut w) = trace {
         w.flush()?;
     }
@@ -210,11 +226,23 @@ pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
     }
     out.write_all(text.as_bytes())?;
     out.flush()?;
-    match error {
+    let code = match &error {
         Some(e) => {
             eprintln!("error: {}: {e}", args.log.display());
-            Ok(1)
+            1
         }
-        None => Ok(summary.exit_code()),
+        None => summary.exit_code(),
+    };
+    if let (Some(dir), Some(recording)) = (&args.report, &recording) {
+        // After the timeline is out: a page that cannot be written must not
+        // hide the alarm (exit 2 stays 2).
+        let log = args.log.display().to_string();
+        let calibration = args.calibration.as_ref().map(|c| c.display().to_string());
+        let source = crate::replay_report::ReplaySource { log: &log, calibration: calibration.as_deref() };
+        if let Err(e) = crate::replay_report::write_replay_report(dir, &source, recording, &events, &summary, error.as_ref()) {
+            eprintln!("error: report {}: {e:#}", dir.display());
+            return Ok(code.max(1));
+        }
     }
+    Ok(code)
 }

@@ -1,7 +1,7 @@
 //! `crane-sim simulate`: one boom maneuver of the thesis (SPEC §5).
 
 use crate::model::thesis_model;
-use crate::plot::{write_svg, Panel, Series};
+use crate::plot::{write_figure, Panel, Series, PALETTE};
 use anyhow::{bail, Context, Result};
 use crane_model::profile::RampShape;
 use crane_model::simulation::{
@@ -70,7 +70,8 @@ pub struct SimulateArgs {
     /// Write the samples as CSV.
     #[arg(long)]
     pub out: Option<PathBuf>,
-    /// Draw piston force and deflections against boom angle (SVG).
+    /// Draw piston force, deflections and F_A against boom angle: PNG if FILE
+    /// ends in .png, SVG if it ends in .svg.
     #[arg(long)]
     pub plot: Option<PathBuf>,
 }
@@ -141,81 +142,35 @@ pub fn run_maneuver(
     Ok((samples, summary))
 }
 
-/// Draws the thesis's two figures for a run.
+/// Draws the thesis's figures for a run (piston force, deflections, F_A
+/// against boom angle), SVG or PNG by the file's extension. Node 3 (between
+/// A0 and A, tens of µm) has its own panel in µm: on the tip's millimetre
+/// axis it would be a flat line.
 pub fn plot_run(path: &std::path::Path, title: &str, samples: &[Sample<f64>]) -> Result<()> {
-    let force: Vec<(f64, f64)> = samples
-        .iter()
-        .map(|s| {
-            (
-                s.boom_angle_rad.to_degrees(),
-                s.reactions.piston_force_n / 1e3,
-            )
-        })
-        .collect();
-    let defl = |i: usize| -> Vec<(f64, f64)> {
-        samples
-            .iter()
-            .map(|s| (s.boom_angle_rad.to_degrees(), s.deflection_m[i] * 1e3))
-            .collect()
+    let series = |f: &dyn Fn(&Sample<f64>) -> f64| -> Vec<(f64, f64)> {
+        samples.iter().map(|s| (s.boom_angle_rad.to_degrees(), f(s))).collect()
     };
-    let (d3, d8, d13) = (defl(0), defl(1), defl(2));
-    let fa: Vec<(f64, f64)> = samples
-        .iter()
-        .map(|s| {
-            (
-                s.boom_angle_rad.to_degrees(),
-                s.reactions.jack_reaction_n / 1e3,
-            )
-        })
-        .collect();
+    let force = series(&|s| s.reactions.piston_force_n / 1e3);
+    let d3 = series(&|s| s.deflection_m[0] * 1e6);
+    let d8 = series(&|s| s.deflection_m[1] * 1e3);
+    let d13 = series(&|s| s.deflection_m[2] * 1e3);
+    let fa = series(&|s| s.reactions.jack_reaction_n / 1e3);
     let t1 = format!("Piston force vs boom angle — {title}");
-    let t2 = format!("Transverse deflection of nodes 3, 8, 13 — {title}");
-    let t3 = format!("Rear-jack reaction F_A (eq. 4.2) — {title}");
-    write_svg(
+    let t2 = format!("Transverse deflection of nodes 8 and 13 (tip) — {title}");
+    let t3 = format!("Transverse deflection of node 3 (between A0 and A) — {title}");
+    let t4 = format!("Rear-jack reaction F_A (eq. 4.2) — {title}");
+    write_figure(
         path,
         &[
-            Panel {
-                title: &t1,
-                x_label: "boom angle (deg)",
-                y_label: "piston force (kN)",
-                series: vec![Series {
-                    label: "simulated",
-                    points: &force,
-                    markers: false,
-                }],
-            },
-            Panel {
-                title: &t2,
-                x_label: "boom angle (deg)",
-                y_label: "deflection (mm)",
-                series: vec![
-                    Series {
-                        label: "node 3",
-                        points: &d3,
-                        markers: false,
-                    },
-                    Series {
-                        label: "node 8",
-                        points: &d8,
-                        markers: false,
-                    },
-                    Series {
-                        label: "node 13 (tip)",
-                        points: &d13,
-                        markers: false,
-                    },
-                ],
-            },
-            Panel {
-                title: &t3,
-                x_label: "boom angle (deg)",
-                y_label: "F_A (kN)",
-                series: vec![Series {
-                    label: "F_A",
-                    points: &fa,
-                    markers: false,
-                }],
-            },
+            Panel::new(&t1, "boom angle θ1 (deg)", "piston force (kN)", vec![Series::line("piston force F (eq. 4.1)", &force)]),
+            Panel::new(
+                &t2,
+                "boom angle θ1 (deg)",
+                "deflection (mm)",
+                vec![Series::line("node 8", &d8).color(PALETTE[1]), Series::line("node 13 (tip C)", &d13).color(PALETTE[2])],
+            ),
+            Panel::new(&t3, "boom angle θ1 (deg)", "deflection (µm)", vec![Series::line("node 3", &d3).color(PALETTE[0])]),
+            Panel::new(&t4, "boom angle θ1 (deg)", "F_A (kN)", vec![Series::line("F_A (crane tips at 0)", &fa).color(PALETTE[3])]),
         ],
     )
 }
