@@ -11,6 +11,7 @@
 //!
 //! | layer | module | what it holds |
 //! |---|---|---|
+//! | time | [`clock`] | integer ticks (µs, wrapping), stalled / gap / backwards faults |
 //! | hardware seam | [`io`] | [`io::SensorInputs`] (ADC counts) and [`io::Outputs`] (lamps, cut-off) |
 //! | conversion | [`conversion`] | counts → mA → bar, counts → degrees, per sensor |
 //! | valid values | [`units`] | [`units::PressureBar`], [`units::BoomAngle`]: cannot hold a faulted reading |
@@ -40,6 +41,7 @@
 pub mod calibration;
 pub mod capacity;
 pub mod checks;
+pub mod clock;
 pub mod conversion;
 pub mod event_log;
 pub mod fault_injector;

@@ -9,11 +9,12 @@ use moment_limiter::checks::FaultKind;
 use moment_limiter::event_log::EventKind;
 use moment_limiter::fault_injector::{FaultInjector, FrameFaultInjector, InjectedFault};
 use moment_limiter::io::{Channel, InputError, OutputCommand, OutputError, Outputs};
+use moment_limiter::clock::{ClockFault, Ticks};
 use moment_limiter::limiter::{Fault, Frame, Limiter, LimiterConfig, StepReport};
 use moment_limiter::rigid_reference::RigidCrane;
 use moment_limiter::state_machine::LimiterState;
 
-const DT: f64 = 0.01;
+const PERIOD_US: u32 = 10_000;
 
 struct Rig {
     limiter: Limiter<f64, RigidCrane<f64>>,
@@ -35,7 +36,7 @@ impl Rig {
         }
     }
     fn step(&mut self) -> StepReport<f64> {
-        let t = f64::from(self.cycle) * DT;
+        let t = Ticks::from_cycle(self.cycle, PERIOD_US);
         self.cycle += 1;
         self.limiter.step_counts(t, &mut self.sensors)
     }
@@ -208,7 +209,7 @@ fn open_circuit_in_a_recorded_frame_is_out_of_range() {
         Some(InjectedFault::OpenCircuit),
     );
     let f: Frame<f64> = inj.apply(Frame {
-        t_s: 0.0,
+        t: Ticks(0),
         p1_bar: 60.0,
         p2_bar: 5.0,
         boom_angle_deg: 50.0,
@@ -280,8 +281,8 @@ fn output_failure_and_clock_fault_cut() {
     let mut rig = Rig::new();
     rig.run(10);
     let mut out = FailingOutputs;
-    rig.limiter.cycle(0.2, &mut rig.sensors, &mut out);
-    let r = rig.limiter.step_counts(0.21, &mut rig.sensors);
+    rig.limiter.cycle(Ticks::from_millis(100), &mut rig.sensors, &mut out);
+    let r = rig.limiter.step_counts(Ticks::from_millis(110), &mut rig.sensors);
     assert_eq!(
         (r.state, r.fault),
         (LimiterState::Fault, Some(Fault::Output))
@@ -289,9 +290,9 @@ fn output_failure_and_clock_fault_cut() {
 
     let mut rig = Rig::new();
     rig.run(10);
-    let r = rig.limiter.step_counts(0.0, &mut rig.sensors);
+    let r = rig.limiter.step_counts(Ticks::from_millis(50), &mut rig.sensors);
     assert_eq!(
         (r.state, r.fault),
-        (LimiterState::Fault, Some(Fault::Clock))
+        (LimiterState::Fault, Some(Fault::Clock(ClockFault::Backwards)))
     );
 }

@@ -162,7 +162,7 @@ pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
         None => None,
     };
 
-    let mut replay = Replay::new(limiter);
+    let mut replay = Replay::new(limiter, args.calibration.is_some());
     let mut parser = LogParser::<f32>::new();
     let mut events: Vec<ReplayEvent<f32>> = Vec::new();
     let mut reader = BufReader::new(file);
@@ -185,7 +185,7 @@ pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
         let (report, event) = replay.feed(&record);
         if let Some(w) = trace.as_mut() {
             text.clear();
-            replay::write_trace_line(&mut text, &report)?;
+            replay::write_trace_line(&mut text, record.t_us, &report)?;
             w.write_all(text.as_bytes())?;
         }
         if let Some(event) = event {
