@@ -235,18 +235,14 @@ fn in_process_f32(log: &Path, calibration: Option<&Path>) -> (String, i32) {
 
     let mut config = LimiterConfig::<f32>::standard();
     if let Some(cal) = calibration {
-        let v: serde_json::Value =
-            serde_json::from_str(&std::fs::read_to_string(cal).unwrap()).unwrap();
-        let f = |k: &str| v[k].as_f64().unwrap_or(0.0) as f32;
-        let c = &mut config.calibration;
-        c.friction_up_n = f("friction_up_n");
-        c.friction_down_n = f("friction_down_n");
-        c.force_offset_n = f("force_offset_n");
-        c.p1_offset_bar = f("p1_offset_bar");
-        c.p2_offset_bar = f("p2_offset_bar");
-        c.angle_offset_deg = f("angle_offset_deg");
+        // The same reader the firmware uses.
+        config.calibration =
+            moment_limiter::config_file::parse_calibration(&std::fs::read(cal).unwrap()).unwrap();
     }
-    let mut replay = Replay::new(Limiter::new(crane_model::thesis_modes::thesis_load_model_f32(), config).unwrap());
+    let mut replay = Replay::new(
+        Limiter::new(crane_model::thesis_modes::thesis_load_model_f32(), config).unwrap(),
+        calibration.is_some(),
+    );
     let mut parser = LogParser::<f32>::new();
     let mut out = String::new();
     let text = std::fs::read_to_string(log).unwrap();

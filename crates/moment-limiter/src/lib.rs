@@ -24,6 +24,7 @@
 //! | the cycle | [`limiter`] | [`limiter::Limiter`]: one `step` ties the above together |
 //! | recorded logs | [`log_format`], [`replay`] | SPEC §5 CSV parser, replay engine, printed output |
 //! | learning | [`calibration`] | friction from unloaded runs |
+//! | files | [`config_file`] | the calibration file's schema, its one reader (host and firmware) and writer |
 //! | testing aids | [`fault_injector`], [`rigid_reference`] | sensor fault injection; a rigid stand-in model |
 //!
 //! ## What a firmware author calls
@@ -42,6 +43,7 @@ pub mod calibration;
 pub mod capacity;
 pub mod checks;
 pub mod clock;
+pub mod config_file;
 pub mod conversion;
 pub mod event_log;
 pub mod fault_injector;

@@ -35,6 +35,9 @@ use crate::limiter::{Fault, Limiter, StepReport};
 use crate::log_format::{LogError, Record};
 use crate::state_machine::LimiterState;
 
+/// What a replay without a calibration says on stderr (host and firmware).
+pub const UNCALIBRATED_NOTE: &str = "note: no --calibration given: cylinder friction and sensor offsets are taken as zero (uncalibrated; \"calibrated\":false in --json)";
+
 /// A change of state during a replay.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ReplayEvent<T> {

@@ -18,7 +18,6 @@
 //! when QEMU runs with `-icount shift=0`).
 
 pub mod budgets;
-mod calibration_json;
 pub mod semihosting;
 
 use core::fmt::Write;
@@ -192,13 +191,15 @@ pub fn run(syst: cortex_m::peripheral::SYST) -> u8 {
                 return EXIT_INPUT;
             }
         };
-        match calibration_json::parse(text) {
+        match moment_limiter::config_file::parse_calibration(text) {
             Ok(calibration) => config.calibration = calibration,
             Err(e) => {
-                let _ = writeln!(err, "error: {path}: {e}");
+                let _ = writeln!(err, "error: calibration {path} refused: {e}");
                 return EXIT_INPUT;
             }
         }
+    } else {
+        let _ = writeln!(err, "{}", replay::UNCALIBRATED_NOTE);
     }
     if let Err(e) = Limiter::new(crate::model::hook_load_model(), config.clone()) {
         let _ = writeln!(err, "error: {e}");
