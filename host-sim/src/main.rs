@@ -10,6 +10,7 @@ use std::process::ExitCode;
 mod cmd;
 mod model;
 mod plot;
+mod stdout;
 
 #[derive(Parser)]
 #[command(
@@ -41,7 +42,15 @@ enum Command {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    // SPEC §5: a usage error exits 1, never 2 (which scripts read as an
+    // alarm); `--help` and `--version` exit 0.
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            let _ = e.print();
+            return ExitCode::from(if e.use_stderr() { 1 } else { 0 });
+        }
+    };
     let result = match cli.command {
         Command::Modes(args) => cmd::modes::run(args),
         Command::Simulate(args) => cmd::simulate::run(args),

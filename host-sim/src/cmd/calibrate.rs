@@ -18,7 +18,7 @@
 //! too few samples moving up or down, or gave values out of bounds.
 
 use std::fs::File;
-use std::io::BufReader;
+use std::io::{BufReader, Write as _};
 use std::path::PathBuf;
 
 use anyhow::Context as _;
@@ -103,12 +103,15 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
     config_file::write_calibration_json(&mut json, &cal)?;
     std::fs::write(&args.out, json)
         .with_context(|| format!("cannot write {}", args.out.display()))?;
-    println!(
+    let mut out = crate::stdout::stdout();
+    writeln!(
+        out,
         "friction_up_n={:.1} friction_down_n={:.1} force_offset_n={:.1} samples_up={samples_up} samples_down={samples_down} -> {}",
         cal.friction_up_n,
         cal.friction_down_n,
         cal.force_offset_n,
         args.out.display()
-    );
+    )?;
+    out.flush()?;
     Ok(0)
 }

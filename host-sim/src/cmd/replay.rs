@@ -119,8 +119,9 @@ pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
     let mut events: Vec<ReplayEvent<f32>> = Vec::new();
     let mut reader = BufReader::new(file);
     let mut buf = Vec::new();
-    let stdout = std::io::stdout();
-    let mut out = stdout.lock();
+    // A closed stdout (`| head -1`) ends the printing quietly and the replay
+    // goes on, so the exit code still says 0 or 2 (`crate::stdout`).
+    let mut out = crate::stdout::stdout();
     let mut text = String::new();
 
     let error: Option<LogError> = loop {

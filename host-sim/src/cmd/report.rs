@@ -85,6 +85,11 @@ pub fn run(args: ReportArgs) -> Result<u8> {
     }
     html.push_str("</body></html>\n");
     std::fs::write(args.out.join("index.html"), html)?;
-    println!("wrote {} (12 maneuvers, chart, index.html)", args.out.display());
+    {
+        use std::io::Write as _;
+        let mut out = crate::stdout::stdout();
+        writeln!(out, "wrote {} (12 maneuvers, chart, index.html)", args.out.display())?;
+        out.flush()?;
+    }
     Ok(0)
 }
