@@ -104,7 +104,13 @@ impl core::fmt::Display for ClockFault {
             ClockFault::Gap { elapsed_us } => {
                 write!(f, "time gap of ")?;
                 write_micros_as_seconds(f, i64::from(*elapsed_us))?;
-                f.write_str(" s")
+                // The longest step the clock can tell (a log's longer gaps
+                // are handed over as this one, see `log_format`).
+                f.write_str(if *elapsed_us >= BACKWARDS_FROM_US - 1 {
+                    " s or more"
+                } else {
+                    " s"
+                })
             }
             ClockFault::Backwards => f.write_str("clock went backwards"),
         }

@@ -511,32 +511,21 @@ impl<'a> Cursor<'a> {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
+/// Test data: a valid file and a table of hostile ones, shared by the tests
+/// of this reader, of `crane-sim replay` and of the firmware under QEMU, so
+/// all three are held to the same verdicts.
+#[cfg(any(test, feature = "std"))]
+#[doc(hidden)]
+pub mod hostile {
+    use super::CALIBRATION_KEYS;
 
-    const GOOD: &str = r#"{"version": 1, "friction_up_n": 10011.5, "friction_down_n": 9000,
+    /// A valid file of schema version 1 (the base the hostile cases alter).
+    pub const GOOD: &str = r#"{"version": 1, "friction_up_n": 10011.5, "friction_down_n": 9000,
         "force_offset_n": -1932.4, "p1_offset_bar": 0.5, "p2_offset_bar": -0.25,
         "angle_offset_deg": 0.0}"#;
 
-    #[test]
-    fn a_good_file_reads_and_the_writer_round_trips() {
-        let c = parse_calibration::<f64>(GOOD.as_bytes()).unwrap();
-        assert_eq!(c.friction_up_n, 10011.5);
-        assert_eq!(c.force_offset_n, -1932.4);
-        assert_eq!(c.p2_offset_bar, -0.25);
-        let mut text = String::new();
-        write_calibration_json(&mut text, &c).unwrap();
-        assert_eq!(parse_calibration::<f64>(text.as_bytes()).unwrap(), c);
-        assert!(text.starts_with("{\n  \"version\": 1,\n"), "{text}");
-        // BOM and f32.
-        let bom = format!("\u{feff}{GOOD}");
-        let c32 = parse_calibration::<f32>(bom.as_bytes()).unwrap();
-        assert_eq!(c32.friction_up_n, 10011.5_f32);
-    }
-
     /// Replaces the value of `key` in GOOD (or removes the member with `None`).
-    fn with(key: &str, value: Option<&str>) -> String {
+    pub fn with(key: &str, value: Option<&str>) -> String {
         let start = GOOD.find(&format!("\"{key}\"")).unwrap();
         let end = start + GOOD[start..].find([',', '}']).unwrap();
         match value {
@@ -554,8 +543,9 @@ mod tests {
         }
     }
 
-    /// The hostile table: every entry is refused, with the key named.
-    pub fn hostile_cases() -> Vec<(String, String, &'static str)> {
+    /// The hostile table: (name, file text, what the refusal must say); every
+    /// entry must be refused, naming the key at fault.
+    pub fn cases() -> Vec<(String, String, &'static str)> {
         let mut cases: Vec<(String, String, &'static str)> = vec![
             ("empty object".into(), "{}".into(), "`version` is missing"),
             ("array".into(), "[1,2,3]".into(), "one JSON object"),
@@ -612,6 +602,29 @@ mod tests {
             "key `p1_offset_bar` = 50 is outside -4 ... 4 bar (2 % of the 200 bar transducer span)",
         ));
         cases
+    }
+
+}
+
+#[cfg(test)]
+mod tests {
+    use super::hostile::{cases as hostile_cases, with, GOOD};
+    use super::*;
+
+    #[test]
+    fn a_good_file_reads_and_the_writer_round_trips() {
+        let c = parse_calibration::<f64>(GOOD.as_bytes()).unwrap();
+        assert_eq!(c.friction_up_n, 10011.5);
+        assert_eq!(c.force_offset_n, -1932.4);
+        assert_eq!(c.p2_offset_bar, -0.25);
+        let mut text = String::new();
+        write_calibration_json(&mut text, &c).unwrap();
+        assert_eq!(parse_calibration::<f64>(text.as_bytes()).unwrap(), c);
+        assert!(text.starts_with("{\n  \"version\": 1,\n"), "{text}");
+        // BOM and f32.
+        let bom = format!("\u{feff}{GOOD}");
+        let c32 = parse_calibration::<f32>(bom.as_bytes()).unwrap();
+        assert_eq!(c32.friction_up_n, 10011.5_f32);
     }
 
     #[test]

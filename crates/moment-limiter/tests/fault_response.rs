@@ -296,3 +296,44 @@ fn output_failure_and_clock_fault_cut() {
         (LimiterState::Fault, Some(Fault::Clock(ClockFault::Backwards)))
     );
 }
+
+/// Issue 12: the clock. Crossing the 2³² µs wrap of the tick counter is
+/// harmless; a stalled clock and a gap of more than 5 periods are FAULTs
+/// that cut, and the limiter recovers after the documented 1 s.
+#[test]
+fn clock_wrap_is_harmless_stall_and_gap_cut() {
+    let mut rig = Rig::new();
+    let start = Ticks(u32::MAX - 499_999); // 0.5 s before the wrap
+    let mut t = start;
+    for k in 0..200 {
+        t = start.wrapping_add_micros(k * PERIOD_US);
+        let r = rig.limiter.step_counts(t, &mut rig.sensors);
+        assert_eq!((r.state, r.fault), (LimiterState::Normal, None), "cycle {k}");
+    }
+    assert!(t.micros() < start.micros(), "the run crossed the wrap");
+
+    // The same time again: stalled.
+    let r = rig.limiter.step_counts(t, &mut rig.sensors);
+    assert_eq!(r.fault, Some(Fault::Clock(ClockFault::Stalled)));
+    assert!(r.state.cuts());
+    // Good cycles: FAULT is held for the 1 s recovery time, then NORMAL.
+    for k in 1..=100 {
+        t = t.wrapping_add_micros(PERIOD_US);
+        let r = rig.limiter.step_counts(t, &mut rig.sensors);
+        assert_eq!(r.fault, None);
+        assert_eq!(r.state, LimiterState::Fault, "recovering, cycle {k}");
+    }
+    t = t.wrapping_add_micros(PERIOD_US);
+    assert_eq!(rig.limiter.step_counts(t, &mut rig.sensors).state, LimiterState::Normal);
+
+    // 5 periods is still a step; 6 is a gap.
+    t = t.wrapping_add_micros(5 * PERIOD_US);
+    assert_eq!(rig.limiter.step_counts(t, &mut rig.sensors).fault, None);
+    t = t.wrapping_add_micros(6 * PERIOD_US);
+    let r = rig.limiter.step_counts(t, &mut rig.sensors);
+    assert_eq!(
+        r.fault,
+        Some(Fault::Clock(ClockFault::Gap { elapsed_us: 60_000 }))
+    );
+    assert!(r.state.cuts());
+}
