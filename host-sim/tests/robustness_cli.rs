@@ -112,7 +112,7 @@ fn shifted_logs_give_identical_events_at_identical_samples() {
                 );
                 match &reference {
                     None => {
-                        assert!(events.len() >= 1, "{name}: no events");
+                        assert!(!events.is_empty(), "{name}: no events");
                         reference = Some((events, code, j));
                     }
                     Some((ev0, code0, j0)) => {

@@ -23,7 +23,7 @@ use std::path::PathBuf;
 
 use anyhow::Context as _;
 use moment_limiter::calibration::CalibrationLearner;
-use moment_limiter::limiter::{Limiter, LimiterConfig};
+use moment_limiter::limiter::{Fault, Limiter, LimiterConfig};
 use moment_limiter::log_format::LogParser;
 
 use moment_limiter::config_file;
@@ -76,8 +76,10 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
                 );
             }
             let report = limiter.step_frame(&record.frame);
+            // An implausibly negative load is the limiter's verdict on an
+            // uncalibrated estimate; the learner needs the measurement itself.
             match (report.fault, report.measurement) {
-                (None, Some(m)) => learner
+                (None | Some(Fault::ImplausibleLoad), Some(m)) => learner
                     .observe(limiter.model(), &m)
                     .map_err(|e| anyhow::anyhow!("{name}: line {}: model: {e}", record.line))?,
                 _ => faulted += 1,
