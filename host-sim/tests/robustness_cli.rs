@@ -286,7 +286,57 @@ fn negative_load_beyond_the_bound_is_a_fault() {
     assert_eq!(out.status.code(), Some(2));
     let j = json(&out);
     let f = faults(&j);
-    assert_eq!(f[0], (0, "load estimate implausibly negative".into()), "{j}");
+    // −8.3 t·m from the first sample (50 Hz): FAULT once it held 1 s.
+    assert_eq!(f[0], (50, "load estimate implausibly negative".into()), "{j}");
+
+    // What an honest unloaded crane reads below zero is not a fault: standing
+    // at 85° after raising (static friction, about −2.2 t), a lowering ramp
+    // from 80°, and a fast lowering from 85° in which the synthetic p1 itself
+    // drops out of range (a sensor FAULT) and the load reads −5.4 t for a
+    // moment after it.
+    let cal = example("cal.json");
+    for (low, high, direction, profile, seed, reads_below, exit) in [
+        ("40", "85", "up", "cycloidal", "8", -2000.0, 0),
+        ("40", "80", "down", "cycloidal", "3", -700.0, 0),
+        ("40", "85", "down", "linear", "9", -5000.0, 2),
+    ] {
+        let label = format!("unloaded {low}°-{high}° {direction} {profile} seed {seed}");
+        let log = dir.path().join(format!("unloaded_{low}_{high}_{direction}.csv"));
+        let out = bin()
+            .args(["synth", "--load-kg", "0", "--duration", "10", "--rate-hz", "50"])
+            .args(["--low-deg", low, "--high-deg", high, "--direction", direction])
+            .args(["--profile", profile, "--seed", seed, "--out"])
+            .arg(&log)
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+        let min_load = read_min_load(&log, &cal);
+        assert!(min_load < reads_below, "{label}: reads down to {min_load} kg only");
+        let out = replay(&log, &["--json", "--calibration", cal.to_str().unwrap()]);
+        let j = json(&out);
+        assert_eq!(out.status.code(), Some(exit), "{label}: {j}");
+        assert!(
+            faults(&j).iter().all(|(_, f)| !f.contains("implausibly negative")),
+            "{label}: {j}"
+        );
+    }
+}
+
+/// The lowest load of a calibrated replay's trace (kg).
+fn read_min_load(log: &Path, cal: &Path) -> f64 {
+    let dir = tempfile::tempdir().unwrap();
+    let trace = dir.path().join("trace.csv");
+    let out = replay(
+        log,
+        &["--calibration", cal.to_str().unwrap(), "--trace", trace.to_str().unwrap()],
+    );
+    assert!(matches!(out.status.code(), Some(0 | 2)));
+    std::fs::read_to_string(&trace)
+        .unwrap()
+        .lines()
+        .skip(1)
+        .filter_map(|l| l.split(',').nth(1)?.parse::<f64>().ok())
+        .fold(f64::INFINITY, f64::min)
 }
 
 #[test]

@@ -25,8 +25,8 @@
 //! command (which doubles as the lamp test).
 //!
 //! A model or capacity error, a clock that stalls, jumps or goes backwards
-//! ([`crate::clock`]), a load estimate below [`LimiterConfig::min_load_kg`]
-//! and an output failure are faults too: whenever the limiter cannot tell
+//! ([`crate::clock`]), a load estimate no hook can give
+//! ([`crate::negative_load`]) and an output failure are faults too: whenever the limiter cannot tell
 //! that the crane is safe, it cuts.
 //!
 //! Time is an integer [`Ticks`] count (µs, wrapping); the float step the
@@ -46,6 +46,7 @@ use crate::conversion::SensorConversion;
 use crate::event_log::{Event, EventKind, EventLog};
 use crate::filter::LowPass;
 use crate::io::{Channel, OutputCommand, OutputError, Outputs, SensorInputs};
+use crate::negative_load::{NegativeLoadBound, NegativeLoadMonitor};
 use crate::load_estimate::{
     estimate_load_kg, Calibration, Direction, DirectionDetector, DirectionThresholds,
     EstimateError, Friction,
@@ -54,19 +55,6 @@ use crate::piston_force::piston_force_n;
 use crate::state_machine::{CycleInput, LimiterState, StateMachine, Thresholds};
 use crate::swing::{SwingGeometry, SwingObserver};
 use crate::units::{BoomAngle, PressureBar};
-
-/// Default of [`LimiterConfig::min_load_kg`] (kg): −1500 kg.
-///
-/// No hook load is negative, but an unloaded hook reads below zero by the
-/// friction the calibration cannot know (static friction at standstill, the
-/// spread between runs) divided by the short load arm at steep angles:
-/// measured with `crane-sim synth` + `replay`, unloaded 10 s and 30 s moves
-/// between 40° and 80°, linear and cycloidal, with and without the example
-/// calibration, the lowest reading was −1016 kg (raising, calibrated, still
-/// at 80°). −1500 kg leaves half a tonne above that, and is far above what a
-/// wrong calibration or a drifted transducer makes of a real load (a p1 zero
-/// 50 bar off turned an 8 t overload into −1.7 t).
-pub const DEFAULT_MIN_LOAD_KG: f64 = -1500.0;
 
 /// Number of events the limiter's log holds.
 pub const EVENT_LOG_LEN: usize = 64;
@@ -99,8 +87,9 @@ pub enum Fault {
     Capacity(CapacityError),
     /// The time of the cycle cannot be trusted (stalled, gap, backwards).
     Clock(ClockFault),
-    /// The load estimate is below [`LimiterConfig::min_load_kg`]: no hook
-    /// load is negative, so the estimate (or its calibration) is wrong.
+    /// The load estimate stayed below [`LimiterConfig::negative_load`]: no
+    /// hook load is negative, so the estimate (or a sensor or the
+    /// calibration) is wrong.
     ImplausibleLoad,
     /// The outputs could not be driven.
     Output,
@@ -167,10 +156,9 @@ pub struct LimiterConfig<T> {
     pub load_reading_factor: T,
     /// The clock's nominal period and longest allowed step ([`crate::clock`]).
     pub clock: ClockConfig,
-    /// The lowest load estimate (kg, ≤ 0) still read as a load: below it the
-    /// estimate is implausible and the limiter FAULTs. See
-    /// [`LimiterConfig::standard`] for the default and why.
-    pub min_load_kg: T,
+    /// How negative a load estimate may be, and for how long, before it is
+    /// a FAULT ([`crate::negative_load`]).
+    pub negative_load: NegativeLoadBound<T>,
 }
 
 impl<T: Real> LimiterConfig<T> {
@@ -196,7 +184,7 @@ impl<T: Real> LimiterConfig<T> {
             calibration: Calibration::none(),
             load_reading_factor: T::lit(1.05),
             clock: ClockConfig::standard(),
-            min_load_kg: T::lit(DEFAULT_MIN_LOAD_KG),
+            negative_load: NegativeLoadBound::standard(),
         }
     }
 
@@ -225,10 +213,7 @@ impl<T: Real> LimiterConfig<T> {
                 "load_reading_factor",
             ),
             (self.clock.is_valid(), "clock"),
-            (
-                self.min_load_kg.is_finite() && self.min_load_kg <= T::lit(0.0),
-                "min_load_kg",
-            ),
+            (self.negative_load.is_valid(), "negative_load"),
         ];
         match checks.iter().find(|(ok, _)| !ok) {
             Some((_, name)) => Err(ConfigError(name)),
@@ -361,6 +346,7 @@ pub struct Limiter<T, M> {
     machine: StateMachine<T>,
     log: EventLog<T, EVENT_LOG_LEN>,
     clock: Clock<T>,
+    negative_load: NegativeLoadMonitor<T>,
     state: Option<LimiterState>,
     output_failed: bool,
 }
@@ -381,6 +367,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             machine: StateMachine::new(config.thresholds),
             log: EventLog::new(),
             clock: Clock::new(config.clock),
+            negative_load: NegativeLoadMonitor::new(config.negative_load),
             state: None,
             output_failed: false,
             model,
@@ -523,12 +510,15 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
                         match self.assess(&m) {
                             Ok(e) => {
                                 estimate = Some(e);
-                                // A negative load beyond the bound is no
-                                // reading (see `min_load_kg`).
-                                (e.load_kg < self.config.min_load_kg)
+                                // A load no hook can give is no reading.
+                                self.negative_load
+                                    .implausible(e.load_kg, m.boom.angle_rad, dt_s)
                                     .then_some(Fault::ImplausibleLoad)
                             }
-                            Err(f) => Some(f),
+                            Err(f) => {
+                                self.negative_load.reset();
+                                Some(f)
+                            }
                         }
                     }
                 }
@@ -579,6 +569,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     /// After a bad cycle the filters restart settled on the next good sample,
     /// so no faulty value ever reaches them.
     fn restart_signal_chain(&mut self) {
+        self.negative_load.reset();
         self.monitor.break_rate_history();
         self.force_filter.reset();
         self.angle_filter.reset();

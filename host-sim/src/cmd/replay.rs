@@ -10,8 +10,16 @@
 //! sample: `t_s,load_kg,rated_load_kg,utilization,state`.
 //!
 //! Exit codes: 0 the log was read to its end and never entered OVERLOAD or
-//! FAULT; 2 it entered OVERLOAD or FAULT at least once; 1 the input (log or
-//! calibration) could not be read.
+//! FAULT; 2 it entered OVERLOAD or FAULT at least once (a clock fault, see
+//! `moment_limiter::clock`, included); 1 the input (log or calibration)
+//! could not be read or was refused, or a write error. A closed stdout
+//! (`| head -1`) is not an error: printing stops quietly and the replay runs
+//! on, so the exit code still says 0 or 2 (`crate::stdout`).
+//!
+//! The calibration file is read with the limiter's own reader
+//! (`moment_limiter::config_file`, the firmware's too). Without
+//! `--calibration` a note goes to stderr and the JSON says
+//! `"calibrated":false`.
 //!
 //! A malformed log: the replay stops at the first bad line; everything
 //! replayed before it is kept and printed (timeline lines and summary, or the
