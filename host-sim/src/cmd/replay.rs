@@ -75,10 +75,6 @@ pub fn load_calibration<T: crane_model::Real>(path: &Path) -> anyhow::Result<Cal
         .map_err(|e| anyhow::anyhow!("calibration {} refused: {e}", path.display()))
 }
 
-/// The note printed on stderr when a replay runs without a calibration (the
-/// firmware prints the same).
-pub const UNCALIBRATED_NOTE: &str = moment_limiter::replay::UNCALIBRATED_NOTE;
-
 /// Reads one line (without `\n`) as UTF-8; `Ok(None)` at the end.
 pub fn read_line<R: BufRead>(
     reader: &mut R,
@@ -106,7 +102,8 @@ pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
     let mut config = LimiterConfig::standard();
     match &args.calibration {
         Some(path) => config.calibration = load_calibration(path)?,
-        None => eprintln!("{UNCALIBRATED_NOTE}"),
+        // The firmware prints the same note.
+        None => eprintln!("{}", replay::UNCALIBRATED_NOTE),
     }
     let limiter = Limiter::new(crane_load_model(), config).map_err(|e| anyhow::anyhow!("{e}"))?;
     let mut trace = match &args.trace {
