@@ -227,6 +227,8 @@ fn every_hostile_calibration_is_refused_with_exit_1_naming_the_key() {
         assert_eq!(out.status.code(), Some(1), "{name}: {stderr}");
         assert!(stderr.contains(expect), "{name}: `{stderr}` lacks `{expect}`");
         assert!(out.stdout.is_empty(), "{name}: replayed anyway");
+        // The table of the closing note (`-- --nocapture`).
+        eprintln!("| {name} | {} | {} |", out.status.code().unwrap_or(-1), stderr.trim());
     }
     // The good base file is accepted (so the refusals are the alterations').
     let good = dir.path().join("good.json");
