@@ -173,9 +173,15 @@ fn compare(label: &str, log: &Path, extra: &[&str]) -> String {
     let ((qe, qv), (he, hv)) = (json_events(&qj.stdout), json_events(&hj.stdout));
     assert_eq!(qe, he, "{label} --json: events differ");
     assert_eq!(qe, qt, "{label}: --json events and the timeline differ");
-    for key in ["samples", "final_state", "complete"] {
+    for key in ["samples", "final_state", "complete", "calibrated"] {
         assert_eq!(qv[key], hv[key], "{label} --json: `{key}` differs");
     }
+    // Without a calibration both say so on stderr, in the same words.
+    let note = moment_limiter::replay::UNCALIBRATED_NOTE;
+    let calibrated = extra.iter().any(|a| a.starts_with("--calibration"));
+    assert_eq!(q.stderr.contains(note), !calibrated, "{label}: QEMU stderr: {}", q.stderr);
+    assert_eq!(h.stderr.contains(note), !calibrated, "{label}: host stderr: {}", h.stderr);
+    assert_eq!(qv["calibrated"], calibrated, "{label}");
     let identical = q.stdout == h.stdout && qj.stdout == hj.stdout;
     format!(
         "{label}: {} state changes at the same samples, exit {} on both; printed output {}",
@@ -235,18 +241,14 @@ fn in_process_f32(log: &Path, calibration: Option<&Path>) -> (String, i32) {
 
     let mut config = LimiterConfig::<f32>::standard();
     if let Some(cal) = calibration {
-        let v: serde_json::Value =
-            serde_json::from_str(&std::fs::read_to_string(cal).unwrap()).unwrap();
-        let f = |k: &str| v[k].as_f64().unwrap_or(0.0) as f32;
-        let c = &mut config.calibration;
-        c.friction_up_n = f("friction_up_n");
-        c.friction_down_n = f("friction_down_n");
-        c.force_offset_n = f("force_offset_n");
-        c.p1_offset_bar = f("p1_offset_bar");
-        c.p2_offset_bar = f("p2_offset_bar");
-        c.angle_offset_deg = f("angle_offset_deg");
+        // The same reader the firmware uses.
+        config.calibration =
+            moment_limiter::config_file::parse_calibration(&std::fs::read(cal).unwrap()).unwrap();
     }
-    let mut replay = Replay::new(Limiter::new(crane_model::thesis_modes::thesis_load_model_f32(), config).unwrap());
+    let mut replay = Replay::new(
+        Limiter::new(crane_model::thesis_modes::thesis_load_model_f32(), config).unwrap(),
+        calibration.is_some(),
+    );
     let mut parser = LogParser::<f32>::new();
     let mut out = String::new();
     let text = std::fs::read_to_string(log).unwrap();
@@ -310,4 +312,125 @@ fn qemu_output_is_byte_identical_to_the_same_f32_code_on_the_host() {
             assert_eq!(q.code, code, "{} {extra:?}: exit code", log.display());
         }
     }
+}
+
+fn skip_without_qemu() -> bool {
+    if qemu_present() {
+        return false;
+    }
+    assert!(
+        !in_ci(),
+        "qemu-system-arm is missing in CI: run scripts/install-test-deps.sh first"
+    );
+    eprintln!("SKIPPED qemu_replay: qemu-system-arm not found (run scripts/install-test-deps.sh)");
+    true
+}
+
+/// A scratch directory under `target/` (paths without spaces or commas, as
+/// the QEMU runner needs).
+fn scratch(name: &str) -> PathBuf {
+    let dir = root().join("target").join(name);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// Copies `log` with every row's time shifted by `shift_us`, exactly.
+fn shifted_copy(log: &Path, shift_us: i64, out: &Path) {
+    let mut dst = String::new();
+    let mut header = false;
+    for line in std::fs::read_to_string(log).unwrap().lines() {
+        if line.starts_with('#') || line.trim().is_empty() || !header {
+            header |= !(line.starts_with('#') || line.trim().is_empty());
+            dst.push_str(line);
+        } else {
+            let (t, rest) = line.split_once(',').unwrap();
+            let us = moment_limiter::log_format::parse_time_us(t).unwrap() + shift_us;
+            let (sign, a) = (if us < 0 { "-" } else { "" }, us.unsigned_abs());
+            dst.push_str(&format!("{sign}{}.{:06},{rest}", a / 1_000_000, a % 1_000_000));
+        }
+        dst.push('\n');
+    }
+    std::fs::write(out, dst).unwrap();
+}
+
+/// (sample, state, utilization, load, fault) of each JSON event: all but the time.
+fn events_without_time(text: &str) -> Vec<String> {
+    let (_, v) = json_events(text);
+    v["events"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|e| format!("{} {} {} {} {}", e["sample"], e["state"], e["utilization"], e["load_kg"], e["fault"]))
+        .collect()
+}
+
+/// Issue 12: the board's integer clock. The same logs shifted by 0, 40 h,
+/// 463 days and across the 2³² µs wrap of the tick counter give the same
+/// events at the same samples on the MCU (QEMU), identical to the host's.
+#[test]
+fn qemu_shifted_logs_give_identical_events() {
+    if skip_without_qemu() {
+        return;
+    }
+    build(&["--target", TARGET, "-p", "firmware"]);
+    build(&["-p", "host-sim"]);
+    let dir = scratch("qemu-shifted-logs");
+    let cal = calibration_file().map(|c| format!("--calibration={}", c.display()));
+    let shifts: [(&str, i64); 4] = [
+        ("0", 0),
+        ("40 h", 144_000_000_000),
+        ("463 days", 40_003_200_000_000),
+        ("across the wrap", (1_i64 << 32) - 5_000_000),
+    ];
+    for name in ["overload_lowering.csv", "wire_break.csv"] {
+        let log = root().join("examples/logs").join(name);
+        if !log.exists() {
+            continue;
+        }
+        let extra: Vec<&str> = cal.iter().map(String::as_str).chain(["--json"]).collect();
+        let mut reference: Option<(Vec<String>, i32)> = None;
+        for (label, shift) in shifts {
+            let copy = dir.join(format!("{shift}_{name}"));
+            shifted_copy(&log, shift, &copy);
+            let (q, h) = (qemu(&copy, &extra), host(&copy, &extra));
+            let (qe, he) = (events_without_time(&q.stdout), events_without_time(&h.stdout));
+            assert_eq!(qe, he, "{name} shifted by {label}: QEMU vs host");
+            assert_eq!(q.code, h.code, "{name} shifted by {label}: exit codes");
+            match &reference {
+                None => reference = Some((qe, q.code)),
+                Some((e0, c0)) => {
+                    assert_eq!(&qe, e0, "{name} shifted by {label}: QEMU events moved");
+                    assert_eq!(q.code, *c0, "{name} shifted by {label}");
+                }
+            }
+        }
+        eprintln!("qemu_replay: {name}: identical events at 0, 40 h, 463 days and across the wrap");
+    }
+}
+
+/// Issue 12: the hostile calibration table through the firmware's reader
+/// (the shared `moment_limiter::config_file`) on the MCU: every file refused
+/// with exit 1 and the same message as `crane-sim replay`.
+#[test]
+fn qemu_refuses_every_hostile_calibration_like_the_host() {
+    if skip_without_qemu() {
+        return;
+    }
+    build(&["--target", TARGET, "-p", "firmware"]);
+    build(&["-p", "host-sim"]);
+    let dir = scratch("qemu-hostile-calibration");
+    let log = logs().into_iter().next().expect("a log");
+    let cases = moment_limiter::config_file::hostile::cases();
+    for (k, (name, content, expect)) in cases.iter().enumerate() {
+        let cal = dir.join(format!("case{k}.json"));
+        std::fs::write(&cal, content).unwrap();
+        let arg = format!("--calibration={}", cal.display());
+        let (q, h) = (qemu(&log, &[&arg]), host(&log, &[&arg]));
+        assert_eq!(q.code, 1, "{name}: QEMU exit {}: {}", q.code, q.stderr);
+        assert_eq!(h.code, 1, "{name}: host exit");
+        assert!(q.stderr.contains(expect), "{name}: QEMU said `{}`", q.stderr);
+        assert_eq!(q.stderr.trim(), h.stderr.trim(), "{name}: QEMU and host messages differ");
+        assert!(q.stdout.is_empty(), "{name}: the firmware replayed anyway");
+    }
+    eprintln!("qemu_replay: {} hostile calibration files refused by QEMU and host alike", cases.len());
 }

@@ -30,6 +30,7 @@
 use defmt_rtt as _; // defmt transport on the board: RTT, read by probe-rs.
 use embedded_hal_bus::spi::ExclusiveDevice;
 use limiter_drivers::{AlarmOutputs, ChannelMap, Mcp3208, Polarity};
+use moment_limiter::clock::{ClockConfig, Ticks};
 use moment_limiter::io::{OutputCommand, Outputs};
 use moment_limiter::limiter::{Limiter, LimiterConfig};
 use stm32f4xx_hal::{
@@ -42,8 +43,8 @@ use stm32f4xx_hal::{
     watchdog::IndependentWatchdog,
 };
 
-/// Control period (s): 100 Hz.
-const PERIOD_S: f32 = 0.01;
+/// Control period (µs): 100 Hz, the limiter clock's nominal period.
+const PERIOD_US: u32 = ClockConfig::standard().period_us;
 /// GPIOC pins of the outputs (see the wiring table).
 const WARNING_PIN: u32 = 0;
 const ALARM_PIN: u32 = 1;
@@ -161,11 +162,13 @@ pub fn run() -> ! {
     let mut previous = limiter.state();
     loop {
         let _ = nb::block!(hw.tick.wait());
-        // Time from the cycle count, not by summing f32 periods.
-        let t_s = cycle as f32 * PERIOD_S;
-        let report = limiter.cycle(t_s, &mut hw.adc, &mut hw.outputs);
+        // Integer time (moment_limiter::clock): the cycle count in µs,
+        // wrapping every 71.6 min, which the limiter's wrap-safe differences
+        // make harmless; never an absolute float.
+        let now = Ticks::from_cycle(cycle, PERIOD_US);
+        let report = limiter.cycle(now, &mut hw.adc, &mut hw.outputs);
         if report.state != previous {
-            defmt::warn!("t={}s state {}", t_s, report.state.as_str());
+            defmt::warn!("cycle {} state {}", cycle, report.state.as_str());
             previous = report.state;
         }
         // Overrun: the next tick already came while we were working.

@@ -14,6 +14,7 @@ mod plot;
 mod progress;
 mod rating;
 mod replay_report;
+mod stdout;
 
 #[derive(Parser)]
 #[command(
@@ -59,7 +60,15 @@ at least once; 1 the log or the calibration could not be read, or the command li
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    // SPEC §5: a usage error exits 1, never 2 (which scripts read as an
+    // alarm); `--help` and `--version` exit 0.
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            let _ = e.print();
+            return ExitCode::from(if e.use_stderr() { 1 } else { 0 });
+        }
+    };
     let result = match cli.command {
         Command::Modes(args) => cmd::modes::run(args),
         Command::Simulate(args) => cmd::simulate::run(args),

@@ -61,7 +61,7 @@ mod tests {
         let model = rating_model();
         let capacity = limiter_capacity(1.5).unwrap();
         let limiter = Limiter::new(crane_load_model(), LimiterConfig::standard()).unwrap();
-        let mut replay = Replay::new(limiter);
+        let mut replay = Replay::new(limiter, true);
         let mut parser = LogParser::<f32>::new();
         let (mut compared, mut worst) = (0, 0.0f64);
         for line in log.lines() {
@@ -69,9 +69,9 @@ mod tests {
             let (report, _) = replay.feed(&record);
             let (Some(m), Some(est)) = (report.measurement, report.estimate) else { continue };
             let same = capacity.rating(&model, m.boom_now).unwrap().rated_load_kg;
-            assert_eq!(est.rated_load_kg, same, "t = {} s", report.t_s);
+            assert_eq!(est.rated_load_kg, same, "t = {} µs", record.t_us);
             let at_rest = rated_at(&model, &capacity, m.boom_now.angle_rad).unwrap().rated_load_kg;
-            assert!(at_rest >= est.rated_load_kg * 0.9999, "t = {} s: at rest {at_rest} < moving {}", report.t_s, est.rated_load_kg);
+            assert!(at_rest >= est.rated_load_kg * 0.9999, "t = {} µs: at rest {at_rest} < moving {}", record.t_us, est.rated_load_kg);
             worst = worst.max(f64::from((at_rest - est.rated_load_kg) / at_rest));
             compared += 1;
         }

@@ -35,7 +35,7 @@ const STATES: [(LimiterState, &str, RGBColor); 4] = [
 #[derive(Debug, Clone, Copy)]
 pub struct ReplaySample {
     /// Time (s).
-    pub t_s: f32,
+    pub t_s: f64,
     /// p1 as recorded (bar).
     pub p1_bar: f32,
     /// p2 as recorded (bar).
@@ -66,7 +66,7 @@ impl ReplayRecording {
     pub fn push(&mut self, record: &Record<f32>, report: &StepReport<f32>) {
         let f = &record.frame;
         self.samples.push(ReplaySample {
-            t_s: f.t_s,
+            t_s: record.t_us as f64 * 1e-6,
             p1_bar: f.p1_bar,
             p2_bar: f.p2_bar,
             angle_deg: f.boom_angle_deg,
@@ -112,7 +112,7 @@ fn decimate(points: Vec<(f64, f64)>) -> Vec<(f64, f64)> {
 }
 
 fn series(samples: &[ReplaySample], f: impl Fn(&ReplaySample) -> Option<f32>) -> Vec<(f64, f64)> {
-    decimate(samples.iter().map(|s| (f64::from(s.t_s), f(s).map_or(f64::NAN, f64::from))).collect())
+    decimate(samples.iter().map(|s| (s.t_s, f(s).map_or(f64::NAN, f64::from))).collect())
 }
 
 /// The runs of equal state as bands along time.
@@ -247,7 +247,7 @@ pub fn write_replay_report(
     let first_cut = events.iter().find(|e| e.state.cuts());
     let verdict = match (error, first_cut) {
         (Some(_), _) => "the log could not be read to its end (exit 1)".to_string(),
-        (None, Some(e)) => format!("entered {} at {:.3} s: motions cut (exit 2)", e.state.as_str(), e.t_s),
+        (None, Some(e)) => format!("entered {} at {:.3} s: motions cut (exit 2)", e.state.as_str(), e.t_us as f64 * 1e-6),
         (None, None) => "never entered OVERLOAD or FAULT (exit 0)".to_string(),
     };
     let first = samples.first().map_or(0.0, |s| s.t_s);
@@ -273,7 +273,7 @@ pub fn write_replay_report(
         let _ = write!(
             h,
             "<tr><td>{:.3}</td><td class=\"l {st}\">{st}</td><td>{}</td><td>{}</td><td>{}</td><td class=\"l\">{fault}</td></tr>",
-            e.t_s,
+            e.t_us as f64 * 1e-6,
             num(e.utilization, 100.0, 1),
             num(e.load_kg, 1.0, 0),
             e.sample
@@ -322,7 +322,7 @@ pub fn replay_file(log: &Path, calibration: Option<&Path>) -> Result<ReplayOutco
         config.calibration = load_calibration(path)?;
     }
     let limiter = Limiter::new(crane_load_model(), config).map_err(|e| anyhow::anyhow!("{e}"))?;
-    let mut replay = Replay::new(limiter);
+    let mut replay = Replay::new(limiter, calibration.is_some());
     let mut parser = LogParser::<f32>::new();
     let mut reader = std::io::BufReader::new(file);
     let mut buf = Vec::new();

@@ -209,9 +209,12 @@ fn calibrate_learns_friction_and_replay_uses_it() {
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     let j: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&cal).unwrap()).unwrap();
-    // The logs were made with 12 kN friction up and 8 kN down.
-    let up = j["mean_residual_up_n"].as_f64().unwrap();
-    let down = j["mean_residual_down_n"].as_f64().unwrap();
+    // The logs were made with 12 kN friction up and 8 kN down: the mean
+    // residuals are offset + friction up and offset − friction down.
+    let key = |k: &str| j[k].as_f64().unwrap_or_else(|| panic!("no `{k}` in {j}"));
+    assert_eq!(j["version"], 1);
+    let up = key("force_offset_n") + key("friction_up_n");
+    let down = key("force_offset_n") - key("friction_down_n");
     assert!((up - 12_000.0).abs() < 1_000.0, "{up}");
     assert!((down + 8_000.0).abs() < 1_000.0, "{down}");
     // Only one direction: refused.

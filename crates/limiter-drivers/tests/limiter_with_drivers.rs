@@ -8,6 +8,7 @@ use embedded_hal_mock::eh1::spi::{Mock as SpiMock, Transaction};
 use limiter_drivers::{AlarmOutputs, ChannelMap, Mcp3208, Polarity};
 use moment_limiter::checks::FaultKind;
 use moment_limiter::io::{Channel, InputError, OutputCommand, OutputError, Outputs};
+use moment_limiter::clock::Ticks;
 use moment_limiter::limiter::{Fault, Limiter, LimiterConfig};
 use moment_limiter::rigid_reference::RigidCrane;
 use moment_limiter::state_machine::LimiterState;
@@ -86,7 +87,7 @@ fn a_dying_spi_bus_puts_the_limiter_in_fault_and_cuts() {
     let mut limiter = Limiter::new(RigidCrane::coles_930(), config).unwrap();
     limiter.power_up(&mut outputs).unwrap();
 
-    let mut t = 0.0;
+    let mut t = Ticks(0);
     for _ in 0..good_cycles {
         let report = limiter.cycle(t, &mut adc, &mut outputs);
         assert_ne!(
@@ -94,7 +95,7 @@ fn a_dying_spi_bus_puts_the_limiter_in_fault_and_cuts() {
             LimiterState::Fault,
             "good readings: {report:?}"
         );
-        t += 0.01;
+        t = t.wrapping_add_micros(10_000);
     }
     assert!(!outputs.0.last().unwrap().cut_boom_down);
 
@@ -183,7 +184,7 @@ fn a_failing_output_pin_faults_the_limiter_and_leaves_the_relays_de_energised() 
     limiter.power_up(&mut outputs).unwrap();
     let mut states = Vec::new();
     for i in 0..cycles {
-        states.push(limiter.cycle(i as f64 * 0.01, &mut adc, &mut outputs).state);
+        states.push(limiter.cycle(Ticks::from_cycle(i as u32, 10_000), &mut adc, &mut outputs).state);
     }
     assert_eq!(states.last(), Some(&LimiterState::Fault), "{states:?}");
     let (_, _, down, hoist) = outputs.release();

@@ -6,6 +6,7 @@
 //! always holds the most recent `N` events and says how many were lost. The
 //! firmware drains it to non-volatile memory; the host prints it.
 
+use crate::clock::Ticks;
 use crate::limiter::Fault;
 use crate::state_machine::LimiterState;
 
@@ -23,8 +24,8 @@ pub enum EventKind {
 /// One logged event.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Event<T> {
-    /// Time of the cycle (s, the limiter's clock).
-    pub t_s: T,
+    /// Time of the cycle on the limiter's clock ([`crate::clock`]).
+    pub t: Ticks,
     /// What happened.
     pub kind: EventKind,
     /// Boom angle (degrees), if it was read correctly.
@@ -105,15 +106,15 @@ mod tests {
         let mut log: EventLog<f64, 3> = EventLog::new();
         for k in 0..5 {
             log.push(Event {
-                t_s: f64::from(k),
+                t: Ticks::from_millis(k),
                 kind: EventKind::SelfTestPassed,
                 boom_angle_deg: None,
                 load_kg: None,
                 utilization: None,
             });
         }
-        let times: Vec<f64> = log.iter().map(|e| e.t_s).collect();
-        assert_eq!(times, vec![2.0, 3.0, 4.0]);
+        let times: Vec<u32> = log.iter().map(|e| e.t.micros()).collect();
+        assert_eq!(times, vec![2000, 3000, 4000]);
         assert_eq!(log.dropped(), 2);
     }
 }

@@ -15,6 +15,11 @@
 //! - it is stable for any time step, so replayed logs at other rates than
 //!   100 Hz are filtered correctly.
 //!
+//! The step comes from the limiter's integer clock ([`crate::clock`]), so it
+//! takes few distinct values (one on the board): the coefficient
+//! 1 − e^(−Δt/τ) and the group delay are computed when the step changes and
+//! reused, keeping `exp` out of the steady cycle.
+//!
 //! The limiter runs the force and the angle through the same filter, so the
 //! two stay aligned in time whatever the cut-off, and takes the angle's rate
 //! and acceleration as differences of the filtered angle (see
@@ -34,16 +39,22 @@ pub struct LowPass<T> {
     stage_count: usize,
     /// Outputs of the stages; `None` until the first sample.
     stages: Option<[T; MAX_STAGES]>,
+    /// (Δt, 1 − e^(−Δt/τ), delay) of the last step (see the module doc).
+    cached: (T, T, T),
 }
 
 impl<T: Real> LowPass<T> {
     /// A filter of `stages` stages (clamped to 1…[`MAX_STAGES`]), each with
     /// cut-off `cutoff_hz` (must be > 0).
     pub fn new(cutoff_hz: T, stages: usize) -> Self {
+        let tau_s = T::lit(1.0) / (T::two_pi() * cutoff_hz);
+        let stage_count = stages.clamp(1, MAX_STAGES);
+        let zero = T::lit(0.0);
         Self {
-            tau_s: T::lit(1.0) / (T::two_pi() * cutoff_hz),
-            stage_count: stages.clamp(1, MAX_STAGES),
+            tau_s,
+            stage_count,
             stages: None,
+            cached: (zero, zero, T::lit(stage_count as f64) * tau_s),
         }
     }
 
@@ -51,6 +62,13 @@ impl<T: Real> LowPass<T> {
     /// a ramp, n·Δt/(e^(Δt/τ) − 1) for the discretised stages (n·τ − n·Δt/2
     /// to second order; n·τ as Δt → 0).
     pub fn delay_s(&self, dt_s: T) -> T {
+        if dt_s == self.cached.0 {
+            return self.cached.2;
+        }
+        self.compute_delay_s(dt_s)
+    }
+
+    fn compute_delay_s(&self, dt_s: T) -> T {
         let n = T::lit(self.stage_count as f64);
         let x = dt_s / self.tau_s;
         if x > T::lit(1e-6) && x.is_finite() {
@@ -77,7 +95,14 @@ impl<T: Real> LowPass<T> {
                 } else {
                     T::lit(0.0)
                 };
-                let a = T::lit(1.0) - (-dt / self.tau_s).exp();
+                if dt != self.cached.0 {
+                    self.cached = (
+                        dt,
+                        T::lit(1.0) - (-dt / self.tau_s).exp(),
+                        self.compute_delay_s(dt),
+                    );
+                }
+                let a = self.cached.1;
                 let mut input = x;
                 for s in st.iter_mut().take(self.stage_count) {
                     *s += a * (input - *s);

@@ -11,6 +11,7 @@
 //!
 //! | layer | module | what it holds |
 //! |---|---|---|
+//! | time | [`clock`] | integer ticks (µs, wrapping), stalled / gap / backwards faults |
 //! | hardware seam | [`io`] | [`io::SensorInputs`] (ADC counts) and [`io::Outputs`] (lamps, cut-off) |
 //! | conversion | [`conversion`] | counts → mA → bar, counts → degrees, per sensor |
 //! | valid values | [`units`] | [`units::PressureBar`], [`units::BoomAngle`]: cannot hold a faulted reading |
@@ -18,11 +19,13 @@
 //! | force | [`piston_force`], [`filter`] | eq. 4.1 and the oscillation filter |
 //! | load | [`load_estimate`], [`swing`] | W from the model's piston force (quadratic in W), friction per direction, boom inertia, load-swing correction, read ×1.05 (SAE J376) |
 //! | capacity | [`capacity`] | tipping load from the affine jack reaction, safety factor, chart |
+//! | plausibility | [`negative_load`] | a load estimate no hook can give is a FAULT |
 //! | decision | [`state_machine`] | NORMAL / WARNING / OVERLOAD / FAULT, hysteresis, outputs |
 //! | logger | [`event_log`] | EN 13000 event ring buffer |
 //! | the cycle | [`limiter`] | [`limiter::Limiter`]: one `step` ties the above together |
 //! | recorded logs | [`log_format`], [`replay`] | SPEC §5 CSV parser, replay engine, printed output |
 //! | learning | [`calibration`] | friction from unloaded runs |
+//! | files | [`config_file`] | the calibration file's schema, its one reader (host and firmware) and writer |
 //! | testing aids | [`fault_injector`], [`rigid_reference`] | sensor fault injection; a rigid stand-in model |
 //!
 //! ## What a firmware author calls
@@ -30,8 +33,9 @@
 //! Build a [`limiter::Limiter`] from a crane model implementing
 //! [`crane_model::load_model::HookLoadModel`] and a
 //! [`limiter::LimiterConfig`]; call [`limiter::Limiter::power_up`] once, then
-//! [`limiter::Limiter::cycle`] every 10 ms with the time, the sensor inputs
-//! and the outputs. Drain [`limiter::Limiter::events_mut`] to storage.
+//! [`limiter::Limiter::cycle`] every 10 ms with the time as a
+//! [`clock::Ticks`] (µs, wrapping: the cycle count × 10 000 will do), the
+//! sensor inputs and the outputs. Drain [`limiter::Limiter::events_mut`] to storage.
 //! The replay tool calls [`limiter::Limiter::step_frame`] through
 //! [`replay::Replay`] instead.
 #![cfg_attr(not(any(test, feature = "std")), no_std)]
@@ -40,6 +44,8 @@
 pub mod calibration;
 pub mod capacity;
 pub mod checks;
+pub mod clock;
+pub mod config_file;
 pub mod conversion;
 pub mod event_log;
 pub mod fault_injector;
@@ -48,6 +54,7 @@ pub mod io;
 pub mod limiter;
 pub mod load_estimate;
 pub mod log_format;
+pub mod negative_load;
 pub mod piston_force;
 pub mod replay;
 pub mod rigid_reference;

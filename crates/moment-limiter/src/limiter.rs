@@ -24,9 +24,13 @@
 //! limiter reports FAULT, and [`Limiter::power_up`] drives the fail-safe
 //! command (which doubles as the lamp test).
 //!
-//! A model or capacity error, a clock going backwards and an output failure
-//! are faults too: whenever the limiter cannot tell that the crane is safe,
-//! it cuts.
+//! A model or capacity error, a clock that stalls, jumps or goes backwards
+//! ([`crate::clock`]), a load estimate no hook can give
+//! ([`crate::negative_load`]) and an output failure are faults too: whenever the limiter cannot tell
+//! that the crane is safe, it cuts.
+//!
+//! Time is an integer [`Ticks`] count (µs, wrapping); the float step the
+//! filters see is computed from the integer difference ([`crate::clock`]).
 
 use core::fmt;
 
@@ -34,6 +38,7 @@ use crane_model::load_model::{BoomState, HookLoadModel};
 use crane_model::Real;
 
 use crate::capacity::{Capacity, CapacityError};
+use crate::clock::{Clock, ClockConfig, ClockFault, Ticks};
 use crate::checks::{
     channel_name, FaultKind, PlausibilityConfig, PlausibilityMonitor, SensorFault,
 };
@@ -41,6 +46,7 @@ use crate::conversion::SensorConversion;
 use crate::event_log::{Event, EventKind, EventLog};
 use crate::filter::LowPass;
 use crate::io::{Channel, OutputCommand, OutputError, Outputs, SensorInputs};
+use crate::negative_load::{NegativeLoadBound, NegativeLoadMonitor};
 use crate::load_estimate::{
     estimate_load_kg, Calibration, Direction, DirectionDetector, DirectionThresholds,
     EstimateError, Friction,
@@ -60,8 +66,8 @@ pub const UTILIZATION_CEILING: f64 = 10.0;
 /// One sample of a recorded log, in physical units.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Frame<T> {
-    /// Time (s).
-    pub t_s: T,
+    /// Time on the limiter's clock ([`crate::clock`]).
+    pub t: Ticks,
     /// Piston-side pressure p1 (bar).
     pub p1_bar: T,
     /// Rod-side pressure p2 (bar).
@@ -79,8 +85,12 @@ pub enum Fault {
     Estimate(EstimateError),
     /// No rated load could be computed.
     Capacity(CapacityError),
-    /// Time did not advance (went backwards or is not finite).
-    Clock,
+    /// The time of the cycle cannot be trusted (stalled, gap, backwards).
+    Clock(ClockFault),
+    /// The load estimate stayed below [`LimiterConfig::negative_load`]: no
+    /// hook load is negative, so the estimate (or a sensor or the
+    /// calibration) is wrong.
+    ImplausibleLoad,
     /// The outputs could not be driven.
     Output,
 }
@@ -93,7 +103,8 @@ impl fmt::Display for Fault {
             Fault::Estimate(EstimateError::NotObservable) => f.write_str("load not observable"),
             Fault::Capacity(CapacityError::Model(e)) => write!(f, "capacity model: {e}"),
             Fault::Capacity(CapacityError::NotObservable) => f.write_str("capacity not observable"),
-            Fault::Clock => f.write_str("clock not advancing"),
+            Fault::Clock(c) => write!(f, "{c}"),
+            Fault::ImplausibleLoad => f.write_str("load estimate implausibly negative"),
             Fault::Output => f.write_str("output driver failed"),
         }
     }
@@ -143,6 +154,11 @@ pub struct LimiterConfig<T> {
     /// an estimate within ±5 % of the truth still reads inside it. The
     /// utilization, and so every alarm, uses the load as read.
     pub load_reading_factor: T,
+    /// The clock's nominal period and longest allowed step ([`crate::clock`]).
+    pub clock: ClockConfig,
+    /// How negative a load estimate may be, and for how long, before it is
+    /// a FAULT ([`crate::negative_load`]).
+    pub negative_load: NegativeLoadBound<T>,
 }
 
 impl<T: Real> LimiterConfig<T> {
@@ -167,6 +183,8 @@ impl<T: Real> LimiterConfig<T> {
             thresholds: Thresholds::standard(),
             calibration: Calibration::none(),
             load_reading_factor: T::lit(1.05),
+            clock: ClockConfig::standard(),
+            negative_load: NegativeLoadBound::standard(),
         }
     }
 
@@ -194,6 +212,8 @@ impl<T: Real> LimiterConfig<T> {
                 self.load_reading_factor >= T::lit(1.0) && self.load_reading_factor <= T::lit(1.1),
                 "load_reading_factor",
             ),
+            (self.clock.is_valid(), "clock"),
+            (self.negative_load.is_valid(), "negative_load"),
         ];
         match checks.iter().find(|(ok, _)| !ok) {
             Some((_, name)) => Err(ConfigError(name)),
@@ -257,8 +277,8 @@ pub struct Estimate<T> {
 /// The result of one cycle.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct StepReport<T> {
-    /// Time of the cycle (s).
-    pub t_s: T,
+    /// Time of the cycle.
+    pub t: Ticks,
     /// State after the cycle.
     pub state: LimiterState,
     /// Outputs to drive.
@@ -325,7 +345,8 @@ pub struct Limiter<T, M> {
     direction: DirectionDetector<T>,
     machine: StateMachine<T>,
     log: EventLog<T, EVENT_LOG_LEN>,
-    last_t_s: Option<T>,
+    clock: Clock<T>,
+    negative_load: NegativeLoadMonitor<T>,
     state: Option<LimiterState>,
     output_failed: bool,
 }
@@ -345,7 +366,8 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             direction: DirectionDetector::new(config.direction),
             machine: StateMachine::new(config.thresholds),
             log: EventLog::new(),
-            last_t_s: None,
+            clock: Clock::new(config.clock),
+            negative_load: NegativeLoadMonitor::new(config.negative_load),
             state: None,
             output_failed: false,
             model,
@@ -393,19 +415,19 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     /// that a failed driver leaves the motions cut).
     pub fn cycle<S: SensorInputs, O: Outputs>(
         &mut self,
-        t_s: T,
+        now: Ticks,
         inputs: &mut S,
         outputs: &mut O,
     ) -> StepReport<T> {
-        let report = self.step_counts(t_s, inputs);
+        let report = self.step_counts(now, inputs);
         self.output_failed = outputs.apply(report.command).is_err();
         report
     }
 
     /// One cycle from raw ADC counts (the firmware's entry).
-    pub fn step_counts<S: SensorInputs>(&mut self, t_s: T, inputs: &mut S) -> StepReport<T> {
+    pub fn step_counts<S: SensorInputs>(&mut self, now: Ticks, inputs: &mut S) -> StepReport<T> {
         let readings = self.read_counts(inputs);
-        self.step_readings(t_s, readings)
+        self.step_readings(now, readings)
     }
 
     /// One cycle from a recorded frame in physical units (the replay's entry).
@@ -418,7 +440,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
                 let a = BoomAngle::new(frame.boom_angle_deg).map_err(fault(Channel::BoomAngle))?;
                 Ok((p1, p2, a))
             });
-        self.step_readings(frame.t_s, readings)
+        self.step_readings(frame.t, readings)
     }
 
     fn read_counts<S: SensorInputs>(&self, inputs: &mut S) -> Result<Readings<T>, SensorFault> {
@@ -446,25 +468,19 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     /// Stages 2–6, shared by both entries.
     fn step_readings(
         &mut self,
-        t_s: T,
+        t: Ticks,
         readings: Result<Readings<T>, SensorFault>,
     ) -> StepReport<T> {
-        // Clock.
-        let dt = match self.last_t_s {
-            None => Some(T::lit(0.0)),
-            Some(last) if t_s.is_finite() && t_s >= last => Some(t_s - last),
-            Some(_) => None,
-        };
-        if t_s.is_finite() && dt.is_some() {
-            self.last_t_s = Some(t_s);
-        }
-        let dt_s = dt.unwrap_or(T::lit(0.0));
+        // Clock: the step comes from the integer difference; a stalled,
+        // jumping or backwards clock is a fault (the step is then 0).
+        let clock = self.clock.advance(t);
+        let dt_s = *clock.as_ref().unwrap_or(&T::lit(0.0));
 
         // Stage 1 (history checks) and stages 2–4.
         let mut measurement = None;
         let mut estimate = None;
-        let fault = if dt.is_none() {
-            Some(Fault::Clock)
+        let fault = if let Err(c) = clock {
+            Some(Fault::Clock(c))
         } else if self.output_failed {
             Some(Fault::Output)
         } else {
@@ -494,9 +510,15 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
                         match self.assess(&m) {
                             Ok(e) => {
                                 estimate = Some(e);
-                                None
+                                // A load no hook can give is no reading.
+                                self.negative_load
+                                    .implausible(e.load_kg, m.boom.angle_rad, dt_s)
+                                    .then_some(Fault::ImplausibleLoad)
                             }
-                            Err(f) => Some(f),
+                            Err(f) => {
+                                self.negative_load.reset();
+                                Some(f)
+                            }
                         }
                     }
                 }
@@ -512,7 +534,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
 
         // Stage 6: self-test on the first cycle, then every state change.
         let event = |kind| Event {
-            t_s,
+            t,
             kind,
             boom_angle_deg: measurement.map(|m| m.boom_angle_deg),
             load_kg: estimate.map(|e| e.load_kg),
@@ -535,7 +557,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         self.state = Some(state);
 
         StepReport {
-            t_s,
+            t,
             state,
             command: state.command(),
             measurement,
@@ -547,6 +569,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     /// After a bad cycle the filters restart settled on the next good sample,
     /// so no faulty value ever reaches them.
     fn restart_signal_chain(&mut self) {
+        self.negative_load.reset();
         self.monitor.break_rate_history();
         self.force_filter.reset();
         self.angle_filter.reset();

@@ -17,6 +17,30 @@
 //!   text that is not a number is a format error. `true_load_kg` may be empty.
 //!
 //! Errors name the 1-based line (comments and header counted) and the field.
+//!
+//! ## Time
+//!
+//! `t_s` is read **exactly**, from its decimal digits (an optional sign, an
+//! optional exponent), to whole microseconds: digits beyond the microsecond
+//! are rounded, half away from zero; the time may be anywhere within
+//! ±9.2·10¹² s. It is never converted through a float, so a log whose times
+//! are shifted by any whole number of microseconds (40 h, 463 days, across
+//! the limiter clock's 2³² µs wrap) replays to the same events at the same
+//! samples. [`Record::t_us`] keeps the exact time (for printing);
+//! [`Frame::t`] is the limiter's wrapping tick ([`crate::clock`]), the
+//! exact differences of the log's times, except that a step of 2³¹ µs
+//! (35.8 min) or more is handed to the limiter as 2³¹ − 1 µs, a gap it
+//! faults on like any gap over 50 ms (the 32-bit clock could otherwise not
+//! tell a gap of k × 71.6 min from none).
+//!
+//! **Which time errors are the file's and which the limiter's.** A time that
+//! is not a number, not finite, out of range or **earlier than the previous
+//! row's** is a malformed file (SPEC §5): an error naming the line; the replay
+//! stops there. A time **equal to the previous row's** (a stalled clock,
+//! duplicate samples) or a **gap** between rows is data: it is what the
+//! controller would have lived through, so it goes to the limiter, which
+//! FAULTs and cuts exactly as on the board ([`crate::clock`]); the replay
+//! shows the FAULT at that sample and exits 2, never 0.
 //! The firmware reads the log line by line through semihosting and calls
 //! [`LogParser::feed_line`] on each; the host does the same.
 
@@ -24,6 +48,7 @@ use core::fmt;
 
 use crane_model::Real;
 
+use crate::clock::{Ticks, BACKWARDS_FROM_US};
 use crate::limiter::Frame;
 
 /// Most columns a header may have.
@@ -97,6 +122,8 @@ pub enum LogErrorKind {
     NotANumber(&'static str),
     /// The time is not finite.
     TimeNotFinite,
+    /// The time is beyond ±9.2·10¹² s (it does not fit the exact clock).
+    TimeOutOfRange,
     /// The time is earlier than the previous row's.
     TimeBackwards,
     /// The header is followed by no data row.
@@ -133,6 +160,9 @@ impl fmt::Display for LogError {
             LogErrorKind::EmptyField(c) => write!(f, "field `{c}` is empty"),
             LogErrorKind::NotANumber(c) => write!(f, "field `{c}` is not a number"),
             LogErrorKind::TimeNotFinite => write!(f, "field `{T_S}` is not a finite time"),
+            LogErrorKind::TimeOutOfRange => {
+                write!(f, "field `{T_S}` is out of range (beyond ±9.2e12 s)")
+            }
             LogErrorKind::TimeBackwards => write!(f, "field `{T_S}` goes backwards in time"),
             LogErrorKind::NoSamples => f.write_str("no data rows after the header"),
             LogErrorKind::NotUtf8 => f.write_str("not valid UTF-8"),
@@ -146,6 +176,8 @@ impl fmt::Display for LogError {
 pub struct Record<T> {
     /// 1-based line number of the row.
     pub line: u32,
+    /// The row's time exactly as written, in microseconds (see "Time").
+    pub t_us: i64,
     /// The sensor values.
     pub frame: Frame<T>,
     /// The true hook load (kg), if the log has it.
@@ -157,8 +189,10 @@ pub struct Record<T> {
 pub struct LogParser<T> {
     line: u32,
     columns: Option<heapless::Vec<Column, MAX_COLUMNS>>,
-    last_t_s: Option<T>,
+    /// Exact time (µs) and tick of the previous row.
+    last: Option<(i64, Ticks)>,
     samples: u32,
+    _values: core::marker::PhantomData<T>,
 }
 
 impl<T: Real> Default for LogParser<T> {
@@ -173,8 +207,9 @@ impl<T: Real> LogParser<T> {
         Self {
             line: 0,
             columns: None,
-            last_t_s: None,
+            last: None,
             samples: 0,
+            _values: core::marker::PhantomData,
         }
     }
 
@@ -222,6 +257,7 @@ impl<T: Real> LogParser<T> {
         };
         let mut fields = trimmed.split(',');
         let mut values: [Option<T>; 5] = [None; 5];
+        let mut time_us = None;
         for &column in columns.iter() {
             let field = fields
                 .next()
@@ -240,6 +276,10 @@ impl<T: Real> LogParser<T> {
                 if field.is_empty() {
                     return Err(err(LogErrorKind::EmptyField(column.name())));
                 }
+                if column == Column::Time {
+                    time_us = Some(parse_time_us(field).map_err(err)?);
+                    continue;
+                }
                 let v: f64 = field
                     .parse()
                     .map_err(|_| err(LogErrorKind::NotANumber(column.name())))?;
@@ -250,23 +290,35 @@ impl<T: Real> LogParser<T> {
             return Err(err(LogErrorKind::TooManyFields));
         }
         let missing = |name| err(LogErrorKind::MissingField(name));
-        let [t, p1, p2, angle, true_load] = values;
-        let t_s = t.ok_or(missing(T_S))?;
-        if !t_s.is_finite() {
-            return Err(err(LogErrorKind::TimeNotFinite));
-        }
-        if self.last_t_s.is_some_and(|last| t_s < last) {
-            return Err(err(LogErrorKind::TimeBackwards));
-        }
-        self.last_t_s = Some(t_s);
+        let [_, p1, p2, angle, true_load] = values;
+        let t_us = time_us.ok_or(missing(T_S))?;
+        let frame = Frame {
+            t: Ticks(0),
+            p1_bar: p1.ok_or(missing(P1_BAR))?,
+            p2_bar: p2.ok_or(missing(P2_BAR))?,
+            boom_angle_deg: angle.ok_or(missing(BOOM_ANGLE_DEG))?,
+        };
+        let t = match self.last {
+            None => Ticks(t_us as u32), // the low 32 bits: wrapping
+            Some((last_us, last_tick)) => {
+                let step = t_us
+                    .checked_sub(last_us)
+                    .filter(|d| *d >= 0)
+                    .ok_or(err(LogErrorKind::TimeBackwards))?;
+                let clamped = u32::try_from(step)
+                    .unwrap_or(u32::MAX)
+                    .min(BACKWARDS_FROM_US - 1);
+                last_tick.wrapping_add_micros(clamped)
+            }
+        };
+        self.last = Some((t_us, t));
         self.samples = self.samples.saturating_add(1);
         Ok(Some(Record {
             line: line_no,
+            t_us,
             frame: Frame {
-                t_s,
-                p1_bar: p1.ok_or(missing(P1_BAR))?,
-                p2_bar: p2.ok_or(missing(P2_BAR))?,
-                boom_angle_deg: angle.ok_or(missing(BOOM_ANGLE_DEG))?,
+                t,
+                ..frame
             },
             true_load_kg: true_load,
         }))
@@ -289,6 +341,69 @@ impl<T: Real> LogParser<T> {
             Ok(())
         }
     }
+}
+
+/// Reads a decimal time in seconds (`[+-]digits[.digits][e[+-]digits]`)
+/// exactly, as whole microseconds, rounding the digits beyond the
+/// microsecond half away from zero (see "Time" in the module doc).
+pub fn parse_time_us(text: &str) -> Result<i64, LogErrorKind> {
+    if text.parse::<f64>().is_ok_and(|v| !v.is_finite()) {
+        return Err(LogErrorKind::TimeNotFinite);
+    }
+    let not_a_number = LogErrorKind::NotANumber(T_S);
+    let (negative, body) = match text.as_bytes().first() {
+        Some(b'-') => (true, text.get(1..).unwrap_or("")),
+        Some(b'+') => (false, text.get(1..).unwrap_or("")),
+        _ => (false, text),
+    };
+    let (mantissa, exponent) = match body.find(['e', 'E']) {
+        Some(i) => (
+            body.get(..i).unwrap_or(""),
+            body.get(i + 1..)
+                .and_then(|e| e.parse::<i32>().ok())
+                .ok_or(not_a_number)?,
+        ),
+        None => (body, 0),
+    };
+    let (int, frac) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    let all_digits = |s: &str| s.bytes().all(|b| b.is_ascii_digit());
+    if (int.is_empty() && frac.is_empty()) || !all_digits(int) || !all_digits(frac) {
+        return Err(not_a_number);
+    }
+    if !(-64..=64).contains(&exponent) {
+        return Err(LogErrorKind::TimeOutOfRange);
+    }
+    // The digits int ++ frac with the point after `point` of them; the
+    // microseconds are the digits before position point + 6, the next one
+    // rounds.
+    let point = i64::try_from(int.len()).unwrap_or(i64::MAX) + i64::from(exponent);
+    let end = point + 6;
+    let digit_at = |k: i64| -> u8 {
+        usize::try_from(k)
+            .ok()
+            .and_then(|k| {
+                if k < int.len() {
+                    int.as_bytes().get(k)
+                } else {
+                    frac.as_bytes().get(k - int.len())
+                }
+            })
+            .map_or(0, |b| b - b'0')
+    };
+    let mut us: i64 = 0;
+    let mut k: i64 = 0;
+    while k < end {
+        // Leading zeros cannot overflow; beyond the written digits pad with 0.
+        us = us
+            .checked_mul(10)
+            .and_then(|v| v.checked_add(i64::from(digit_at(k))))
+            .ok_or(LogErrorKind::TimeOutOfRange)?;
+        k += 1;
+    }
+    if digit_at(end) >= 5 {
+        us = us.checked_add(1).ok_or(LogErrorKind::TimeOutOfRange)?;
+    }
+    Ok(if negative { -us } else { us })
 }
 
 fn parse_header(text: &str) -> Result<heapless::Vec<Column, MAX_COLUMNS>, LogErrorKind> {
@@ -341,7 +456,7 @@ mod tests {
         assert_eq!(
             r[1].frame,
             Frame {
-                t_s: 0.01,
+                t: Ticks(10_000),
                 p1_bar: 61.0,
                 p2_bar: 5.1,
                 boom_angle_deg: 45.1
@@ -409,6 +524,54 @@ mod tests {
         assert_eq!(e.kind, LogErrorKind::TooManyFields);
         let e = parse_all(&format!("{h}0,,2,3,4\n")).unwrap_err();
         assert_eq!(e.kind, LogErrorKind::EmptyField(P1_BAR));
+    }
+
+    #[test]
+    fn time_is_read_exactly_to_the_microsecond() {
+        let ok = |s: &str| parse_time_us(s).unwrap();
+        assert_eq!(ok("0"), 0);
+        assert_eq!(ok("0.01"), 10_000);
+        assert_eq!(ok("144000.020"), 144_000_020_000);
+        assert_eq!(ok("40003200.01"), 40_003_200_010_000);
+        assert_eq!(ok("-1.5"), -1_500_000);
+        assert_eq!(ok("+.5"), 500_000);
+        assert_eq!(ok("7."), 7_000_000);
+        assert_eq!(ok("1.5e-2"), 15_000);
+        assert_eq!(ok("2E3"), 2_000_000_000);
+        assert_eq!(ok("0.0000005"), 1); // half rounds away from zero
+        assert_eq!(ok("0.00000049999"), 0);
+        assert_eq!(ok("-0.0000005"), -1);
+        assert_eq!(ok("9223372036854.775807"), i64::MAX);
+        assert_eq!(ok("1e-30"), 0);
+        for bad in ["", "-", ".", "1..2", "1e", "0x10", "1,5", "abc", "1 2", "e5"] {
+            assert_eq!(
+                parse_time_us(bad),
+                Err(LogErrorKind::NotANumber(T_S)),
+                "{bad:?}"
+            );
+        }
+        assert_eq!(parse_time_us("inf"), Err(LogErrorKind::TimeNotFinite));
+        assert_eq!(
+            parse_time_us("9223372036854.775808"),
+            Err(LogErrorKind::TimeOutOfRange)
+        );
+        assert_eq!(parse_time_us("1e65"), Err(LogErrorKind::TimeOutOfRange));
+    }
+
+    #[test]
+    fn ticks_are_the_exact_differences_and_wrap() {
+        let h = "t_s,p1_bar,p2_bar,boom_angle_deg\n";
+        // 4294.967296 s = 2^32 µs: the clock wraps between the rows.
+        let r = parse_all(&format!("{h}4294.957296,1,2,3\n4294.977296,1,2,3\n")).unwrap();
+        assert_eq!(r[0].frame.t, Ticks(u32::MAX - 9_999));
+        assert_eq!(r[1].frame.t.since(r[0].frame.t), 20_000);
+        assert_eq!(r[1].t_us, 4_294_977_296);
+        // A duplicate time is data (the limiter faults on it), not an error.
+        let r = parse_all(&format!("{h}1,1,2,3\n1,1,2,3\n")).unwrap();
+        assert_eq!(r[0].frame.t, r[1].frame.t);
+        // A gap of exactly 2^32 µs must not look like no gap: clamped.
+        let r = parse_all(&format!("{h}0,1,2,3\n4294.967296,1,2,3\n")).unwrap();
+        assert_eq!(r[1].frame.t.since(r[0].frame.t), BACKWARDS_FROM_US - 1);
     }
 
     #[test]

@@ -12,21 +12,31 @@
 //!   and for FAULT a trailing ` fault="p1 out of range"`; unknown values are `-`;
 //! - summary line: `samples=3000 max_utilization=0.8120 final_state=NORMAL`;
 //! - JSON: one object `{"samples":…,"max_utilization":…,"final_state":"…",
-//!   "complete":true,"error":null,"events":[{"t_s":…,"state":"…",
+//!   "calibrated":true,"complete":true,"error":null,"events":[{"t_s":…,"state":"…",
 //!   "utilization":…,"load_kg":…,"sample":…,"fault":null},…]}`; unknown
 //!   numbers are `null`; `complete` is false and `error` the message when the
-//!   log could not be read to its end;
+//!   log could not be read to its end; `calibrated` is false when the replay
+//!   ran without a calibration file (friction and offsets taken as zero);
 //! - trace CSV: `t_s,load_kg,rated_load_kg,utilization,state`, empty cells
 //!   where unknown.
+//!
+//! Times are printed from the log's exact microseconds
+//! ([`crate::log_format`]), rounded to the millisecond with integer
+//! arithmetic, so they are right at any offset (a float would print a time
+//! 463 days into a log to the nearest 4 s).
 
 use core::fmt::{self, Write};
 
 use crane_model::load_model::HookLoadModel;
 use crane_model::Real;
 
+use crate::clock::write_micros_as_seconds;
 use crate::limiter::{Fault, Limiter, StepReport};
 use crate::log_format::{LogError, Record};
 use crate::state_machine::LimiterState;
+
+/// What a replay without a calibration says on stderr (host and firmware).
+pub const UNCALIBRATED_NOTE: &str = "note: no --calibration given: cylinder friction and sensor offsets are taken as zero (uncalibrated; \"calibrated\":false in --json)";
 
 /// A change of state during a replay.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -35,8 +45,8 @@ pub struct ReplayEvent<T> {
     pub sample: u32,
     /// Line of the log it came from.
     pub line: u32,
-    /// Time (s).
-    pub t_s: T,
+    /// Time of the log row, exactly (µs).
+    pub t_us: i64,
     /// State entered.
     pub state: LimiterState,
     /// Utilization, if known.
@@ -58,6 +68,10 @@ pub struct ReplaySummary<T> {
     pub final_state: Option<LimiterState>,
     /// `true` if OVERLOAD or FAULT was entered at least once.
     pub entered_cut_state: bool,
+    /// `false` when the replay runs without a calibration (friction and
+    /// offsets zero): printed in the JSON so no one mistakes it for a
+    /// calibrated result.
+    pub calibrated: bool,
 }
 
 impl<T> ReplaySummary<T> {
@@ -81,8 +95,9 @@ pub struct Replay<T, M> {
 }
 
 impl<T: Real, M: HookLoadModel<T>> Replay<T, M> {
-    /// Starts a replay on a fresh limiter.
-    pub fn new(limiter: Limiter<T, M>) -> Self {
+    /// Starts a replay on a fresh limiter; `calibrated` says whether its
+    /// configuration holds a calibration read from a file.
+    pub fn new(limiter: Limiter<T, M>, calibrated: bool) -> Self {
         Self {
             limiter,
             summary: ReplaySummary {
@@ -90,6 +105,7 @@ impl<T: Real, M: HookLoadModel<T>> Replay<T, M> {
                 max_utilization: None,
                 final_state: None,
                 entered_cut_state: false,
+                calibrated,
             },
         }
     }
@@ -101,7 +117,7 @@ impl<T: Real, M: HookLoadModel<T>> Replay<T, M> {
         let event = (s.final_state != Some(report.state)).then(|| ReplayEvent {
             sample: s.samples,
             line: record.line,
-            t_s: record.frame.t_s,
+            t_us: record.t_us,
             state: report.state,
             utilization: report.estimate.map(|e| e.utilization),
             load_kg: report.estimate.map(|e| e.load_kg),
@@ -180,7 +196,7 @@ fn json_display<W: Write, D: fmt::Display>(w: &mut W, d: &D) -> fmt::Result {
 /// Writes one timeline line (with a trailing newline).
 pub fn write_event_line<W: Write, T: Real>(w: &mut W, e: &ReplayEvent<T>) -> fmt::Result {
     w.write_str("t=")?;
-    number(w, Some(e.t_s), 3, "-")?;
+    write_micros_as_seconds(w, e.t_us)?;
     write!(w, " s {} utilization=", e.state.as_str())?;
     number(w, e.utilization, 4, "-")?;
     w.write_str(" load_kg=")?;
@@ -218,7 +234,12 @@ pub fn write_json<'a, W: Write, T: Real + 'a>(
         Some(state) => json_string(w, state.as_str())?,
         None => w.write_str("null")?,
     }
-    write!(w, ",\"complete\":{},\"error\":", error.is_none())?;
+    write!(
+        w,
+        ",\"calibrated\":{},\"complete\":{},\"error\":",
+        s.calibrated,
+        error.is_none()
+    )?;
     match error {
         Some(e) => json_display(w, e)?,
         None => w.write_str("null")?,
@@ -229,7 +250,7 @@ pub fn write_json<'a, W: Write, T: Real + 'a>(
             w.write_char(',')?;
         }
         w.write_str("{\"t_s\":")?;
-        number(w, Some(e.t_s), 3, "null")?;
+        write_micros_as_seconds(w, e.t_us)?;
         w.write_str(",\"state\":")?;
         json_string(w, e.state.as_str())?;
         w.write_str(",\"utilization\":")?;
@@ -251,9 +272,13 @@ pub fn write_trace_header<W: Write>(w: &mut W) -> fmt::Result {
     w.write_str("t_s,load_kg,rated_load_kg,utilization,state\n")
 }
 
-/// Writes one `--trace` row.
-pub fn write_trace_line<W: Write, T: Real>(w: &mut W, r: &StepReport<T>) -> fmt::Result {
-    number(w, Some(r.t_s), 3, "")?;
+/// Writes one `--trace` row for the log row at `t_us` (exact, µs).
+pub fn write_trace_line<W: Write, T: Real>(
+    w: &mut W,
+    t_us: i64,
+    r: &StepReport<T>,
+) -> fmt::Result {
+    write_micros_as_seconds(w, t_us)?;
     w.write_char(',')?;
     number(w, r.estimate.map(|e| e.load_kg), 1, "")?;
     w.write_char(',')?;

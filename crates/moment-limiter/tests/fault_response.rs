@@ -9,11 +9,12 @@ use moment_limiter::checks::FaultKind;
 use moment_limiter::event_log::EventKind;
 use moment_limiter::fault_injector::{FaultInjector, FrameFaultInjector, InjectedFault};
 use moment_limiter::io::{Channel, InputError, OutputCommand, OutputError, Outputs};
+use moment_limiter::clock::{ClockFault, Ticks};
 use moment_limiter::limiter::{Fault, Frame, Limiter, LimiterConfig, StepReport};
 use moment_limiter::rigid_reference::RigidCrane;
 use moment_limiter::state_machine::LimiterState;
 
-const DT: f64 = 0.01;
+const PERIOD_US: u32 = 10_000;
 
 struct Rig {
     limiter: Limiter<f64, RigidCrane<f64>>,
@@ -35,7 +36,7 @@ impl Rig {
         }
     }
     fn step(&mut self) -> StepReport<f64> {
-        let t = f64::from(self.cycle) * DT;
+        let t = Ticks::from_cycle(self.cycle, PERIOD_US);
         self.cycle += 1;
         self.limiter.step_counts(t, &mut self.sensors)
     }
@@ -208,7 +209,7 @@ fn open_circuit_in_a_recorded_frame_is_out_of_range() {
         Some(InjectedFault::OpenCircuit),
     );
     let f: Frame<f64> = inj.apply(Frame {
-        t_s: 0.0,
+        t: Ticks(0),
         p1_bar: 60.0,
         p2_bar: 5.0,
         boom_angle_deg: 50.0,
@@ -280,8 +281,8 @@ fn output_failure_and_clock_fault_cut() {
     let mut rig = Rig::new();
     rig.run(10);
     let mut out = FailingOutputs;
-    rig.limiter.cycle(0.2, &mut rig.sensors, &mut out);
-    let r = rig.limiter.step_counts(0.21, &mut rig.sensors);
+    rig.limiter.cycle(Ticks::from_millis(100), &mut rig.sensors, &mut out);
+    let r = rig.limiter.step_counts(Ticks::from_millis(110), &mut rig.sensors);
     assert_eq!(
         (r.state, r.fault),
         (LimiterState::Fault, Some(Fault::Output))
@@ -289,9 +290,50 @@ fn output_failure_and_clock_fault_cut() {
 
     let mut rig = Rig::new();
     rig.run(10);
-    let r = rig.limiter.step_counts(0.0, &mut rig.sensors);
+    let r = rig.limiter.step_counts(Ticks::from_millis(50), &mut rig.sensors);
     assert_eq!(
         (r.state, r.fault),
-        (LimiterState::Fault, Some(Fault::Clock))
+        (LimiterState::Fault, Some(Fault::Clock(ClockFault::Backwards)))
     );
+}
+
+/// Issue 12: the clock. Crossing the 2³² µs wrap of the tick counter is
+/// harmless; a stalled clock and a gap of more than 5 periods are FAULTs
+/// that cut, and the limiter recovers after the documented 1 s.
+#[test]
+fn clock_wrap_is_harmless_stall_and_gap_cut() {
+    let mut rig = Rig::new();
+    let start = Ticks(u32::MAX - 499_999); // 0.5 s before the wrap
+    let mut t = start;
+    for k in 0..200 {
+        t = start.wrapping_add_micros(k * PERIOD_US);
+        let r = rig.limiter.step_counts(t, &mut rig.sensors);
+        assert_eq!((r.state, r.fault), (LimiterState::Normal, None), "cycle {k}");
+    }
+    assert!(t.micros() < start.micros(), "the run crossed the wrap");
+
+    // The same time again: stalled.
+    let r = rig.limiter.step_counts(t, &mut rig.sensors);
+    assert_eq!(r.fault, Some(Fault::Clock(ClockFault::Stalled)));
+    assert!(r.state.cuts());
+    // Good cycles: FAULT is held for the 1 s recovery time, then NORMAL.
+    for k in 1..=100 {
+        t = t.wrapping_add_micros(PERIOD_US);
+        let r = rig.limiter.step_counts(t, &mut rig.sensors);
+        assert_eq!(r.fault, None);
+        assert_eq!(r.state, LimiterState::Fault, "recovering, cycle {k}");
+    }
+    t = t.wrapping_add_micros(PERIOD_US);
+    assert_eq!(rig.limiter.step_counts(t, &mut rig.sensors).state, LimiterState::Normal);
+
+    // 5 periods is still a step; 6 is a gap.
+    t = t.wrapping_add_micros(5 * PERIOD_US);
+    assert_eq!(rig.limiter.step_counts(t, &mut rig.sensors).fault, None);
+    t = t.wrapping_add_micros(6 * PERIOD_US);
+    let r = rig.limiter.step_counts(t, &mut rig.sensors);
+    assert_eq!(
+        r.fault,
+        Some(Fault::Clock(ClockFault::Gap { elapsed_us: 60_000 }))
+    );
+    assert!(r.state.cuts());
 }

@@ -41,7 +41,7 @@ fn safe_lift_never_warns() {
             r.state,
             LimiterState::Normal,
             "t={} {:?}",
-            f.t_s,
+            common::seconds(f.t),
             r.estimate
         );
     }
@@ -55,21 +55,21 @@ fn overload_while_lowering_is_caught_within_0_2_s() {
         let t_cross = m
             .frames()
             .iter()
-            .map(|f| f.t_s)
+            .map(|f| common::seconds(f.t))
             .find(|&t| m.true_utilization(t) >= 1.0)
             .expect("the manoeuvre crosses the rated load");
         let mut t_overload = None;
         for f in m.frames() {
             let r = l.step_frame(&f);
             if r.state == LimiterState::Overload && t_overload.is_none() {
-                t_overload = Some(f.t_s);
+                t_overload = Some(common::seconds(f.t));
             }
-            if m.true_utilization(f.t_s) < 0.95 {
+            if m.true_utilization(common::seconds(f.t)) < 0.95 {
                 assert_ne!(
                     r.state,
                     LimiterState::Overload,
                     "false overload at t={}",
-                    f.t_s
+                    common::seconds(f.t)
                 );
             }
         }
@@ -126,7 +126,7 @@ fn calibration_removes_friction_per_direction() {
         let (mut worst_cal, mut worst_raw) = (0.0f64, 0.0f64);
         for f in m.frames() {
             let (a, b) = (cal_l.step_frame(&f), raw_l.step_frame(&f));
-            let (_, rate) = m.angle_at(f.t_s);
+            let (_, rate) = m.angle_at(common::seconds(f.t));
             if rate.abs() > 2.0 {
                 worst_cal = worst_cal.max((a.estimate.unwrap().load_kg / 4000.0 - 1.0).abs());
                 worst_raw = worst_raw.max((b.estimate.unwrap().load_kg / 4000.0 - 1.0).abs());
@@ -148,7 +148,7 @@ fn f32_and_f64_agree_on_a_short_replay() {
     let mut state_mismatches = 0;
     for f in m.frames() {
         let f32_frame = moment_limiter::limiter::Frame {
-            t_s: f.t_s as f32,
+            t: f.t,
             p1_bar: f.p1_bar as f32,
             p2_bar: f.p2_bar as f32,
             boom_angle_deg: f.boom_angle_deg as f32,
@@ -158,7 +158,7 @@ fn f32_and_f64_agree_on_a_short_replay() {
             a.estimate.unwrap().utilization,
             f64::from(b.estimate.unwrap().utilization),
         );
-        assert!((ua - ub).abs() < 1e-3, "t={} u64={ua} u32={ub}", f.t_s);
+        assert!((ua - ub).abs() < 1e-3, "t={} u64={ua} u32={ub}", common::seconds(f.t));
         if a.state != b.state {
             state_mismatches += 1;
         }

@@ -2,6 +2,7 @@
 
 mod common;
 
+use moment_limiter::clock::Ticks;
 use moment_limiter::limiter::{Frame, Limiter, LimiterConfig};
 use moment_limiter::rigid_reference::RigidCrane;
 use moment_limiter::state_machine::{CycleInput, LimiterState, StateMachine, Thresholds};
@@ -26,8 +27,8 @@ proptest! {
         for (k, &(dp, da, extra)) in steps.iter().enumerate() {
             p1 = (p1 + dp).clamp(10.0, 150.0);
             angle = (angle + da * 0.1).clamp(30.0, 80.0);
-            let t_s = k as f64 * 0.01;
-            let f = Frame { t_s, p1_bar: p1, p2_bar: 5.0 + 0.01 * (k % 3) as f64, boom_angle_deg: angle };
+            let t = Ticks::from_millis(k as u32 * 10);
+            let f = Frame { t, p1_bar: p1, p2_bar: 5.0 + 0.01 * (k % 3) as f64, boom_angle_deg: angle };
             let a = light.step_frame(&f);
             let b = heavy.step_frame(&Frame { p1_bar: p1 + extra, ..f });
             if let (Some(a), Some(b)) = (a.estimate, b.estimate) {

@@ -18,7 +18,6 @@
 //! when QEMU runs with `-icount shift=0`).
 
 pub mod budgets;
-mod calibration_json;
 pub mod semihosting;
 
 use core::fmt::Write;
@@ -82,6 +81,7 @@ struct PassEnd {
 fn replay_pass(
     path: &str,
     config: &LimiterConfig<f32>,
+    calibrated: bool,
     counter: &mut budgets::CycleCounter,
     cycles: &mut budgets::CycleStats,
     mut on_event: impl FnMut(&ReplayEvent<f32>),
@@ -90,7 +90,7 @@ fn replay_pass(
         Ok(limiter) => limiter,
         Err(_) => return Err(FileError::Open), // checked by the caller before
     };
-    let mut replay = Replay::new(limiter);
+    let mut replay = Replay::new(limiter, calibrated);
     let mut parser = LogParser::<f32>::new();
     let mut lines = LineReader::<LINE_BUF>::new(HostFile::open(path)?);
     let error = loop {
@@ -181,6 +181,7 @@ pub fn run(syst: cortex_m::peripheral::SYST) -> u8 {
     let log_path = args.log.unwrap_or_default();
 
     let mut config = LimiterConfig::<f32>::standard();
+    let calibrated = args.calibration.is_some();
     if let Some(path) = args.calibration {
         let mut buf = [0u8; 2048];
         let text = match HostFile::open(path).and_then(|mut f| f.read_to_end(&mut buf)) {
@@ -190,13 +191,15 @@ pub fn run(syst: cortex_m::peripheral::SYST) -> u8 {
                 return EXIT_INPUT;
             }
         };
-        match calibration_json::parse(text) {
+        match moment_limiter::config_file::parse_calibration(text) {
             Ok(calibration) => config.calibration = calibration,
             Err(e) => {
-                let _ = writeln!(err, "error: {path}: {e}");
+                let _ = writeln!(err, "error: calibration {path} refused: {e}");
                 return EXIT_INPUT;
             }
         }
+    } else {
+        let _ = writeln!(err, "{}", replay::UNCALIBRATED_NOTE);
     }
     if let Err(e) = Limiter::new(crate::model::hook_load_model(), config.clone()) {
         let _ = writeln!(err, "error: {e}");
@@ -210,12 +213,12 @@ pub fn run(syst: cortex_m::peripheral::SYST) -> u8 {
     let end = if args.json {
         // Pass 1 finds the summary that heads the object; pass 2 streams the
         // events (the replay is deterministic: the same events again).
-        let first = replay_pass(log_path, &config, &mut counter, &mut cycles, |_| {});
+        let first = replay_pass(log_path, &config, calibrated, &mut counter, &mut cycles, |_| {});
         match first {
             Ok(first) => {
                 let mut json = JsonStream::head(&mut out, &first.summary, first.error.as_ref());
                 let mut ignored = budgets::CycleStats::default();
-                let second = replay_pass(log_path, &config, &mut counter, &mut ignored, |e| {
+                let second = replay_pass(log_path, &config, calibrated, &mut counter, &mut ignored, |e| {
                     json.event(&mut out, &first.summary, e)
                 });
                 json.tail(&mut out);
@@ -224,7 +227,7 @@ pub fn run(syst: cortex_m::peripheral::SYST) -> u8 {
             Err(e) => Err(e),
         }
     } else {
-        replay_pass(log_path, &config, &mut counter, &mut cycles, |e| {
+        replay_pass(log_path, &config, calibrated, &mut counter, &mut cycles, |e| {
             let _ = replay::write_event_line(&mut out, e);
         })
         .inspect(|end| {

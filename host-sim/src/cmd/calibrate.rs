@@ -10,19 +10,25 @@
 //! symmetric). Samples in which the limiter found a fault are left out and
 //! counted. A log with a `true_load_kg` column that is not 0 is refused.
 //!
-//! Exit codes: 0 written; 1 a log could not be read, was not unloaded, or had
-//! too few samples moving up or down.
+//! The file is written in the calibration schema
+//! (`moment_limiter::config_file`, version 1) and only if every value is
+//! within its physical bounds, so the replay and the firmware accept it.
+//!
+//! Exit codes: 0 written; 1 a log could not be read, was not unloaded, had
+//! too few samples moving up or down, or gave values out of bounds.
 
 use std::fs::File;
-use std::io::BufReader;
+use std::io::{BufReader, Write as _};
 use std::path::PathBuf;
 
 use anyhow::Context as _;
 use moment_limiter::calibration::CalibrationLearner;
-use moment_limiter::limiter::{Limiter, LimiterConfig};
+use moment_limiter::limiter::{Fault, Limiter, LimiterConfig};
 use moment_limiter::log_format::LogParser;
 
-use super::replay::{read_line, CalibrationFile};
+use moment_limiter::config_file;
+
+use super::replay::read_line;
 
 /// Arguments of `crane-sim calibrate`.
 #[derive(clap::Args, Debug)]
@@ -70,8 +76,10 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
                 );
             }
             let report = limiter.step_frame(&record.frame);
+            // An implausibly negative load is the limiter's verdict on an
+            // uncalibrated estimate; the learner needs the measurement itself.
             match (report.fault, report.measurement) {
-                (None, Some(m)) => learner
+                (None | Some(Fault::ImplausibleLoad), Some(m)) => learner
                     .observe(limiter.model(), &m)
                     .map_err(|e| anyhow::anyhow!("{name}: line {}: model: {e}", record.line))?,
                 _ => faulted += 1,
@@ -89,28 +97,23 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
         .finish(args.min_samples)
         .map_err(|e| anyhow::anyhow!("{e}"))?;
     let (samples_up, samples_down) = learner.counts();
-    let (r_up, r_down) = learner.mean_residuals_n().unwrap_or((f64::NAN, f64::NAN));
-    let file = CalibrationFile {
-        friction_up_n: cal.friction_up_n,
-        friction_down_n: cal.friction_down_n,
-        force_offset_n: cal.force_offset_n,
-        p1_offset_bar: cal.p1_offset_bar,
-        p2_offset_bar: cal.p2_offset_bar,
-        angle_offset_deg: cal.angle_offset_deg,
-        samples_up: Some(samples_up),
-        samples_down: Some(samples_down),
-        mean_residual_up_n: Some(r_up),
-        mean_residual_down_n: Some(r_down),
-    };
-    let json = serde_json::to_string_pretty(&file)?;
-    std::fs::write(&args.out, json + "\n")
+    // Only a file the reader (host and firmware) accepts is written.
+    config_file::check_calibration(&cal).map_err(|e| {
+        anyhow::anyhow!("the learned calibration is implausible, not written: {e}; check that the logs are unloaded runs of this crane")
+    })?;
+    let mut json = String::new();
+    config_file::write_calibration_json(&mut json, &cal)?;
+    std::fs::write(&args.out, json)
         .with_context(|| format!("cannot write {}", args.out.display()))?;
-    println!(
+    let mut out = crate::stdout::stdout();
+    writeln!(
+        out,
         "friction_up_n={:.1} friction_down_n={:.1} force_offset_n={:.1} samples_up={samples_up} samples_down={samples_down} -> {}",
         cal.friction_up_n,
         cal.friction_down_n,
         cal.force_offset_n,
         args.out.display()
-    );
+    )?;
+    out.flush()?;
     Ok(0)
 }

@@ -225,21 +225,22 @@ pub fn run(args: ChartArgs) -> Result<u8> {
     if let Some(path) = &args.plot {
         chart_figure(path, &rows, &thesis, args.safety_factor, capacity.max_rated_kg.into())?;
     }
-    let mut out = std::io::stdout().lock();
+    let mut out = crate::stdout::stdout();
     if args.json {
         let report = ChartReport { safety_factor: args.safety_factor, structural_limit_kg: capacity.max_rated_kg.into(), rows, thesis_loads: thesis };
-        let _ = writeln!(out, "{}", serde_json::to_string_pretty(&report)?);
+        writeln!(out, "{}", serde_json::to_string_pretty(&report)?)?;
+        out.flush()?;
         return Ok(0);
     }
-    let _ = writeln!(out, "radius_m,boom_angle_deg,tipping_load_kg,rated_load_kg");
+    writeln!(out, "radius_m,boom_angle_deg,tipping_load_kg,rated_load_kg")?;
     for r in &rows {
-        let _ = writeln!(out, "{:.3},{:.1},{},{:.1}", r.radius_m, r.boom_angle_deg, fmt(r.tipping_load_kg, 1), r.rated_load_kg);
+        writeln!(out, "{:.3},{:.1},{},{:.1}", r.radius_m, r.boom_angle_deg, fmt(r.tipping_load_kg, 1), r.rated_load_kg)?;
     }
-    let _ = writeln!(out);
-    let _ = writeln!(out, "# Tipping of the thesis loads: quasi-static (at rest) and dynamic (lowering from 80° at the 30 s speed)");
-    let _ = writeln!(out, "# load_kg,quasi_static_angle_deg,quasi_static_radius_m,dynamic_angle_deg,dynamic_radius_m");
+    writeln!(out)?;
+    writeln!(out, "# Tipping of the thesis loads: quasi-static (at rest) and dynamic (lowering from 80° at the 30 s speed)")?;
+    writeln!(out, "# load_kg,quasi_static_angle_deg,quasi_static_radius_m,dynamic_angle_deg,dynamic_radius_m")?;
     for t in &thesis {
-        let _ = writeln!(
+        writeln!(
             out,
             "# {:.0},{},{},{},{}",
             t.load_kg,
@@ -247,7 +248,8 @@ pub fn run(args: ChartArgs) -> Result<u8> {
             fmt(t.quasi_static_radius_m, 3),
             fmt(t.dynamic_angle_deg, 2),
             fmt(t.dynamic_radius_m, 3)
-        );
+        )?;
     }
+    out.flush()?;
     Ok(0)
 }

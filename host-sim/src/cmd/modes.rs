@@ -46,12 +46,13 @@ fn row(kind: &'static str, omega: f64) -> ModeRow {
 }
 
 /// One table of modes: number, kind, ω, f.
-fn write_table(out: &mut impl Write, title: &str, rows: &[ModeRow]) {
-    let _ = writeln!(out, "\n{title}");
-    let _ = writeln!(out, "  {:>2}  {:<14} {:>12} {:>10}", "#", "kind", "omega rad/s", "f Hz");
+fn write_table(out: &mut impl Write, title: &str, rows: &[ModeRow]) -> std::io::Result<()> {
+    writeln!(out, "\n{title}")?;
+    writeln!(out, "  {:>2}  {:<14} {:>12} {:>10}", "#", "kind", "omega rad/s", "f Hz")?;
     for (i, m) in rows.iter().enumerate() {
-        let _ = writeln!(out, "  {:>2}  {:<14} {:>12.3} {:>10.3}", i + 1, m.kind, m.omega_rad_s, m.frequency_hz);
+        writeln!(out, "  {:>2}  {:<14} {:>12.3} {:>10.3}", i + 1, m.kind, m.omega_rad_s, m.frequency_hz)?;
     }
+    Ok(())
 }
 
 /// Runs the subcommand; returns the exit code.
@@ -82,21 +83,24 @@ pub fn run(args: ModesArgs) -> anyhow::Result<u8> {
             .map(|k| row(analysis.kind(k).label(), analysis.frequency_rad_s(k)))
             .collect(),
     };
+    // A closed stdout (`| head`) ends the output quietly; other write
+    // errors are errors (`crate::stdout`).
+    let mut out = crate::stdout::stdout();
     if args.json {
-        println!("{}", serde_json::to_string_pretty(&report)?);
+        writeln!(out, "{}", serde_json::to_string_pretty(&report)?)?;
+        out.flush()?;
         return Ok(0);
     }
-    // A closed stdout (`| head`) is not an error of this command: ignore write errors.
-    let mut out = std::io::stdout().lock();
-    let _ = writeln!(out, "Boom (body 1) of the COLES Mobile 930, {} elements", report.elements);
-    let _ = writeln!(out, "  mass                 {:10.2} kg", report.boom_mass_kg);
-    let _ = writeln!(out, "  centre of mass       {:10.4} m from A0", report.centre_of_mass_from_a0_m);
-    let _ = writeln!(
+    writeln!(out, "Boom (body 1) of the COLES Mobile 930, {} elements", report.elements)?;
+    writeln!(out, "  mass                 {:10.2} kg", report.boom_mass_kg)?;
+    writeln!(out, "  centre of mass       {:10.4} m from A0", report.centre_of_mass_from_a0_m)?;
+    writeln!(
         out,
         "  Rayleigh damping     alpha = {:.5} 1/s, beta = {:.4e} s (zeta = 2 % at the two lowest retained modes)",
         report.rayleigh_alpha_per_s, report.rayleigh_beta_s
-    );
-    write_table(&mut out, "Retained modes (thesis basis)", &report.retained);
-    write_table(&mut out, "Lowest constrained modes of the boom (A0 pinned, A clamped)", &report.lowest_constrained);
+    )?;
+    write_table(&mut out, "Retained modes (thesis basis)", &report.retained)?;
+    write_table(&mut out, "Lowest constrained modes of the boom (A0 pinned, A clamped)", &report.lowest_constrained)?;
+    out.flush()?;
     Ok(0)
 }

@@ -10,8 +10,16 @@
 //! sample: `t_s,load_kg,rated_load_kg,utilization,state`.
 //!
 //! Exit codes: 0 the log was read to its end and never entered OVERLOAD or
-//! FAULT; 2 it entered OVERLOAD or FAULT at least once; 1 the input (log or
-//! calibration) could not be read.
+//! FAULT; 2 it entered OVERLOAD or FAULT at least once (a clock fault, see
+//! `moment_limiter::clock`, included); 1 the input (log or calibration)
+//! could not be read or was refused, or a write error. A closed stdout
+//! (`| head -1`) is not an error: printing stops quietly and the replay runs
+//! on, so the exit code still says 0 or 2 (`crate::stdout`).
+//!
+//! The calibration file is read with the limiter's own reader
+//! (`moment_limiter::config_file`, the firmware's too). Without
+//! `--calibration` a note goes to stderr and the JSON says
+//! `"calibrated":false`.
 //!
 //! A malformed log: the replay stops at the first bad line; everything
 //! replayed before it is kept and printed (timeline lines and summary, or the
@@ -25,11 +33,11 @@ use std::path::{Path, PathBuf};
 
 use anyhow::Context as _;
 use crane_model::load_model::HookLoadModel;
+use moment_limiter::config_file;
 use moment_limiter::limiter::{Limiter, LimiterConfig};
 use moment_limiter::load_estimate::Calibration;
 use moment_limiter::log_format::{LogError, LogErrorKind, LogParser};
 use moment_limiter::replay::{self, Replay, ReplayEvent};
-use serde::{Deserialize, Serialize};
 
 /// Arguments of `crane-sim replay`.
 #[derive(clap::Args, Debug)]
@@ -61,67 +69,14 @@ pub fn crane_load_model() -> impl HookLoadModel<f32> {
     crane_model::thesis_modes::thesis_load_model_f32()
 }
 
-/// The calibration file (`CAL.json`). The six values of
-/// `moment_limiter::load_estimate::Calibration`; a missing one is 0 (as the
-/// firmware's reader does). The other members are informational, written by
-/// `crane-sim calibrate`. Any other member is refused, so a misspelt key
-/// cannot silently zero a friction.
-#[derive(Debug, Clone, Default, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct CalibrationFile {
-    /// Friction while luffing up (N).
-    pub friction_up_n: f64,
-    /// Friction while luffing down (N).
-    pub friction_down_n: f64,
-    /// Zero-load force offset (N).
-    pub force_offset_n: f64,
-    /// p1 zero offset (bar).
-    pub p1_offset_bar: f64,
-    /// p2 zero offset (bar).
-    pub p2_offset_bar: f64,
-    /// Pendulum zero offset (degrees).
-    pub angle_offset_deg: f64,
-    /// Informational: samples moving up it was learned from.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub samples_up: Option<u32>,
-    /// Informational: samples moving down it was learned from.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub samples_down: Option<u32>,
-    /// Informational: mean residual force moving up (N).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub mean_residual_up_n: Option<f64>,
-    /// Informational: mean residual force moving down (N).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub mean_residual_down_n: Option<f64>,
-}
-
-impl CalibrationFile {
-    /// The limiter's calibration.
-    pub fn calibration<T: crane_model::Real>(&self) -> Calibration<T> {
-        Calibration {
-            friction_up_n: T::lit(self.friction_up_n),
-            friction_down_n: T::lit(self.friction_down_n),
-            force_offset_n: T::lit(self.force_offset_n),
-            p1_offset_bar: T::lit(self.p1_offset_bar),
-            p2_offset_bar: T::lit(self.p2_offset_bar),
-            angle_offset_deg: T::lit(self.angle_offset_deg),
-        }
-    }
-}
-
-/// Reads and checks a calibration file.
+/// Reads and checks a calibration file with the limiter's own reader
+/// (`moment_limiter::config_file`, the one the firmware uses): every key
+/// required, unknown keys refused, every value within its physical bounds.
 pub fn load_calibration<T: crane_model::Real>(path: &Path) -> anyhow::Result<Calibration<T>> {
-    let text = std::fs::read_to_string(path)
+    let bytes = std::fs::read(path)
         .with_context(|| format!("cannot read calibration {}", path.display()))?;
-    let file: CalibrationFile = serde_json::from_str(&text)
-        .with_context(|| format!("calibration {} is not valid", path.display()))?;
-    let cal = file.calibration();
-    anyhow::ensure!(
-        cal.is_valid(),
-        "calibration {}: values must be finite and frictions not negative",
-        path.display()
-    );
-    Ok(cal)
+    config_file::parse_calibration(&bytes)
+        .map_err(|e| anyhow::anyhow!("calibration {} refused: {e}", path.display()))
 }
 
 /// Reads one line (without `\n`) as UTF-8; `Ok(None)` at the end.
@@ -152,8 +107,10 @@ pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
         std::fs::create_dir_all(dir).with_context(|| format!("cannot create report directory {}", dir.display()))?;
     }
     let mut config = LimiterConfig::standard();
-    if let Some(path) = &args.calibration {
-        config.calibration = load_calibration(path)?;
+    match &args.calibration {
+        Some(path) => config.calibration = load_calibration(path)?,
+        // The firmware prints the same note.
+        None => eprintln!("{}", replay::UNCALIBRATED_NOTE),
     }
     let limiter = Limiter::new(crane_load_model(), config).map_err(|e| anyhow::anyhow!("{e}"))?;
     let mut trace = match &args.trace {
@@ -169,15 +126,16 @@ pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
         None => None,
     };
 
-    let mut replay = Replay::new(limiter);
+    let mut replay = Replay::new(limiter, args.calibration.is_some());
     let mut parser = LogParser::<f32>::new();
     let mut events: Vec<ReplayEvent<f32>> = Vec::new();
     let mut progress = crate::progress::ReplayProgress::new(file.metadata().map_or(0, |m| m.len()));
     let mut recording = args.report.as_ref().map(|_| crate::replay_report::ReplayRecording::default());
     let mut reader = BufReader::new(file);
     let mut buf = Vec::new();
-    let stdout = std::io::stdout();
-    let mut out = stdout.lock();
+    // A closed stdout (`| head -1`) ends the printing quietly and the replay
+    // goes on, so the exit code still says 0 or 2 (`crate::stdout`).
+    let mut out = crate::stdout::stdout();
     let mut text = String::new();
 
     let error: Option<LogError> = loop {
@@ -200,7 +158,7 @@ pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
         }
         if let Some(w) = trace.as_mut() {
             text.clear();
-            replay::write_trace_line(&mut text, &report)?;
+            replay::write_trace_line(&mut text, record.t_us, &report)?;
             w.write_all(text.as_bytes())?;
         }
         if let Some(event) = event {

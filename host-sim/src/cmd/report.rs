@@ -82,7 +82,12 @@ pub fn run(args: ReportArgs) -> Result<u8> {
     }
     html.push_str("</body></html>\n");
     std::fs::write(args.out.join("index.html"), html)?;
-    println!("wrote {} (12 maneuvers, chart, limiter on {} example logs, index.html)", args.out.display(), EXAMPLE_LOGS.len());
+    {
+        use std::io::Write as _;
+        let mut out = crate::stdout::stdout();
+        writeln!(out, "wrote {} (12 maneuvers, chart, limiter on {} example logs, index.html)", args.out.display(), EXAMPLE_LOGS.len())?;
+        out.flush()?;
+    }
     Ok(0)
 }
 
@@ -119,7 +124,7 @@ fn limiter_section(out: &Path) -> Result<String> {
         let source = ReplaySource { log: &format!("{name}.csv"), calibration: Some("cal.json") };
         write_replay_report(&dir.join(name), &source, &outcome.recording, &outcome.events, &outcome.summary, outcome.error.as_ref())?;
         let first = |state: &str| {
-            outcome.events.iter().find(|e| e.state.as_str() == state).map_or("–".to_string(), |e| format!("{:.2}", e.t_s))
+            outcome.events.iter().find(|e| e.state.as_str() == state).map_or("–".to_string(), |e| format!("{:.2}", e.t_us as f64 * 1e-6))
         };
         let final_state = outcome.summary.final_state.map_or("–", |s| s.as_str());
         let _ = write!(

@@ -178,9 +178,11 @@ pub fn plot_run(path: &std::path::Path, title: &str, samples: &[Sample<f64>]) ->
 /// Runs the subcommand; returns the exit code.
 pub fn run(args: SimulateArgs) -> Result<u8> {
     if args.list {
+        let mut out = crate::stdout::stdout();
         for (name, _) in thesis_cases() {
-            println!("{name}");
+            writeln!(out, "{name}")?;
         }
+        out.flush()?;
         return Ok(0);
     }
     let (title, m) = maneuver(&args)?;
@@ -223,31 +225,32 @@ pub fn run(args: SimulateArgs) -> Result<u8> {
         .iter()
         .map(|s| s.deflection_m[2].abs())
         .fold(0.0, f64::max);
-    let mut out = std::io::stdout().lock();
-    let _ = writeln!(out, "maneuver          {title}");
-    let _ = writeln!(
+    let mut out = crate::stdout::stdout();
+    writeln!(out, "maneuver          {title}")?;
+    writeln!(
         out,
         "integrator        Newmark average acceleration, h = {} ms, {} steps, {} evaluations",
         args.step_ms, summary.steps, summary.evaluations
-    );
-    let _ = writeln!(
+    )?;
+    writeln!(
         out,
         "wall time         {:.1} ms ({:.0}x faster than real time)",
         elapsed.as_secs_f64() * 1e3,
         m.end_s() / elapsed.as_secs_f64()
-    );
-    let _ = writeln!(out, "peak piston force {:.1} kN", peak / 1e3);
-    let _ = writeln!(out, "max |tip defl.|   {:.2} mm", max_tip * 1e3);
-    let _ = writeln!(
+    )?;
+    writeln!(out, "peak piston force {:.1} kN", peak / 1e3)?;
+    writeln!(out, "max |tip defl.|   {:.2} mm", max_tip * 1e3)?;
+    writeln!(
         out,
         "min F_A           {:.1} kN{}",
         min_fa / 1e3,
         if min_fa <= 0.0 { "  (TIPS)" } else { "" }
-    );
-    let _ = writeln!(
+    )?;
+    writeln!(
         out,
         "max |constraint|  {:.2e}",
         summary.max_constraint_violation
-    );
+    )?;
+    out.flush()?;
     Ok(0)
 }

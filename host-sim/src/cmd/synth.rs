@@ -47,7 +47,7 @@ pub struct SynthArgs {
     /// Higher boom angle of the move (deg).
     #[arg(long, default_value_t = 80.0)]
     high_deg: f64,
-    /// Samples per second in the log.
+    /// Samples per second in the log (20–500; the limiter faults on gaps over 50 ms).
     #[arg(long, default_value_t = 50.0)]
     rate_hz: f64,
     /// Seed of the noise.
@@ -87,8 +87,10 @@ pub struct SynthArgs {
 
 /// Runs the subcommand; returns the exit code.
 pub fn run(args: SynthArgs) -> Result<u8> {
-    if !(args.rate_hz >= 1.0 && args.rate_hz <= 500.0) {
-        bail!("--rate-hz must be in [1, 500]");
+    // Below 20 Hz the samples are more than 50 ms apart, a gap the limiter
+    // faults on (moment_limiter::clock: 5 periods of its 100 Hz cycle).
+    if !(args.rate_hz >= 20.0 && args.rate_hz <= 500.0) {
+        bail!("--rate-hz must be in [20, 500]: the limiter faults on samples more than 50 ms apart");
     }
     if !(args.low_deg >= 0.0 && args.high_deg <= 85.0 && args.low_deg < args.high_deg) {
         bail!("--low-deg and --high-deg must satisfy 0 ≤ low < high ≤ 85");
@@ -140,6 +142,8 @@ pub fn run(args: SynthArgs) -> Result<u8> {
         writeln!(f, "{}", row.csv_line())?;
     }
     f.flush()?;
-    println!("wrote {} ({title})", args.out.display());
+    let mut out = crate::stdout::stdout();
+    writeln!(out, "wrote {} ({title})", args.out.display())?;
+    out.flush()?;
     Ok(0)
 }

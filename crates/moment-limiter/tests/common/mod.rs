@@ -6,6 +6,7 @@ use crane_model::load_model::{BoomState, HookLoadModel};
 use moment_limiter::conversion::SensorConversion;
 use moment_limiter::fault_injector::Rng;
 use moment_limiter::io::{Channel, InputError, SensorInputs};
+use moment_limiter::clock::Ticks;
 use moment_limiter::limiter::Frame;
 use moment_limiter::piston_force::p1_bar_for_force;
 use moment_limiter::rigid_reference::RigidCrane;
@@ -101,7 +102,7 @@ impl Manoeuvre {
         (p1_bar_for_force(f, p2), p2)
     }
 
-    /// The recorded-style frames (noisy, rounded to 0.01).
+    /// The recorded-style frames (noisy, rounded to 0.01; time to 10 ms).
     pub fn frames(&self) -> Vec<Frame<f64>> {
         let model = RigidCrane::coles_930();
         let mut rng = Rng::new(self.seed);
@@ -113,7 +114,7 @@ impl Manoeuvre {
                 let (deg, _) = self.angle_at(t);
                 let (p1, p2) = self.pressures_at(&model, t);
                 Frame {
-                    t_s: round(t),
+                    t: Ticks::from_millis((t * 100.0).round() as u32 * 10),
                     p1_bar: round(p1 + self.noise_bar * rng.symmetric_unit()),
                     p2_bar: round(p2 + self.noise_bar * rng.symmetric_unit()),
                     boom_angle_deg: round(deg + self.noise_deg * rng.symmetric_unit()),
@@ -174,4 +175,10 @@ impl SensorInputs for SimSensors {
             Channel::BoomAngle => c.angle.counts(self.angle_deg),
         } + dither)
     }
+}
+
+/// The time of a frame in seconds (tests only: the limiter never needs it).
+#[allow(dead_code)]
+pub fn seconds(t: Ticks) -> f64 {
+    f64::from(t.micros()) * 1e-6
 }

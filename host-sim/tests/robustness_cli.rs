@@ -1,0 +1,450 @@
+//! `crane-sim` against a hostile field: shifted and broken time, hostile
+//! calibration files, usage errors, closed and failing stdout (issue 12,
+//! SPEC §4.7, §4.9, §5).
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+
+use moment_limiter::log_format::parse_time_us;
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_crane-sim"))
+}
+
+fn example(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../examples/logs")
+        .join(name)
+}
+
+fn replay(log: &Path, extra: &[&str]) -> Output {
+    bin()
+        .arg("replay")
+        .arg(log)
+        .args(extra)
+        .output()
+        .expect("run crane-sim")
+}
+
+fn text(b: &[u8]) -> String {
+    String::from_utf8_lossy(b).into_owned()
+}
+
+fn json(out: &Output) -> serde_json::Value {
+    serde_json::from_slice(&out.stdout)
+        .unwrap_or_else(|e| panic!("bad JSON ({e}): {}", text(&out.stdout)))
+}
+
+/// Rewrites the `t_s` of every data row of `log` (first column) with `f`
+/// applied to its exact microseconds; writes the result to `out`.
+fn rewrite_times(log: &Path, out: &Path, mut f: impl FnMut(usize, i64) -> i64) {
+    let src = std::fs::read_to_string(log).unwrap();
+    let mut dst = String::new();
+    let mut row = 0;
+    let mut header_seen = false;
+    for line in src.lines() {
+        if line.starts_with('#') || line.trim().is_empty() {
+            dst.push_str(line);
+        } else if !header_seen {
+            assert!(line.starts_with("t_s,"), "t_s must be the first column");
+            header_seen = true;
+            dst.push_str(line);
+        } else {
+            let (t, rest) = line.split_once(',').unwrap();
+            let us = f(row, parse_time_us(t).unwrap());
+            row += 1;
+            let sign = if us < 0 { "-" } else { "" };
+            let a = us.unsigned_abs();
+            dst.push_str(&format!("{sign}{}.{:06},{rest}", a / 1_000_000, a % 1_000_000));
+        }
+        dst.push('\n');
+    }
+    std::fs::write(out, dst).unwrap();
+}
+
+/// The events of a `--json` replay without their times: (sample, state,
+/// utilization, load, fault).
+fn events_without_time(j: &serde_json::Value) -> Vec<String> {
+    j["events"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|e| {
+            format!(
+                "{} {} {} {} {}",
+                e["sample"], e["state"], e["utilization"], e["load_kg"], e["fault"]
+            )
+        })
+        .collect()
+}
+
+/// 2³² µs: the limiter clock's wrap, in µs.
+const WRAP_US: i64 = 1 << 32;
+
+#[test]
+fn shifted_logs_give_identical_events_at_identical_samples() {
+    let dir = tempfile::tempdir().unwrap();
+    let cal = example("cal.json");
+    let shifts: [(&str, i64); 5] = [
+        ("0", 0),
+        ("40 h", 40 * 3600 * 1_000_000),
+        ("463 days", 463 * 86_400 * 1_000_000),
+        // The 2³² µs wrap of the tick counter falls 5 s into the log.
+        ("across the wrap", WRAP_US - 5_000_000),
+        ("463 days and across a wrap", 93 * WRAP_US - 5_000_000),
+    ];
+    for name in ["overload_lowering.csv", "wire_break.csv", "safe_lift.csv"] {
+        for cal_args in [vec![], vec!["--calibration", cal.to_str().unwrap()]] {
+            let mut reference: Option<(Vec<String>, i32, serde_json::Value)> = None;
+            for (label, shift) in shifts {
+                let log = dir.path().join(format!("shifted_{}_{name}", shift));
+                rewrite_times(&example(name), &log, |_, us| us + shift);
+                let args: Vec<&str> = cal_args.iter().copied().chain(["--json"]).collect();
+                let out = replay(&log, &args);
+                let j = json(&out);
+                let code = out.status.code().unwrap();
+                let events = events_without_time(&j);
+                // The printed times are the log's, exactly.
+                let first_t = j["events"][0]["t_s"].as_f64().unwrap();
+                assert!(
+                    (first_t - shift as f64 * 1e-6).abs() < 1e-3,
+                    "{name} {label}: first event at {first_t}"
+                );
+                match &reference {
+                    None => {
+                        assert!(!events.is_empty(), "{name}: no events");
+                        reference = Some((events, code, j));
+                    }
+                    Some((ev0, code0, j0)) => {
+                        assert_eq!(&events, ev0, "{name} {cal_args:?} shifted by {label}");
+                        assert_eq!(code, *code0, "{name} {cal_args:?} shifted by {label}");
+                        assert_eq!(j["max_utilization"], j0["max_utilization"], "{name} {label}");
+                        assert_eq!(j["samples"], j0["samples"]);
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// Replays `log` with its times rewritten by `f`; returns the exit code,
+/// the JSON and stderr.
+fn replay_rewritten(
+    name: &str,
+    f: impl FnMut(usize, i64) -> i64,
+) -> (i32, serde_json::Value, String) {
+    let dir = tempfile::tempdir().unwrap();
+    let log = dir.path().join("log.csv");
+    rewrite_times(&example(name), &log, f);
+    let cal = example("cal.json");
+    let out = replay(&log, &["--json", "--calibration", cal.to_str().unwrap()]);
+    (out.status.code().unwrap(), json(&out), text(&out.stderr))
+}
+
+fn faults(j: &serde_json::Value) -> Vec<(u64, String)> {
+    j["events"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|e| e["state"] == "FAULT")
+        .map(|e| {
+            (
+                e["sample"].as_u64().unwrap(),
+                e["fault"].as_str().unwrap_or_default().to_string(),
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn bad_time_is_a_fault_or_an_error_never_exit_0() {
+    // The unaltered logs: safe_lift exits 0, so any 2 below is the time's.
+    let (code, j, _) = replay_rewritten("safe_lift.csv", |_, us| us);
+    assert_eq!((code, faults(&j)), (0, vec![]));
+
+    // Stalled clock over the 8 t overload: every row at the same time.
+    let (code, j, _) = replay_rewritten("overload_lowering.csv", |_, _| 0);
+    assert_eq!(code, 2);
+    assert_eq!(
+        faults(&j),
+        vec![(1, "clock stalled (time did not advance)".to_string())]
+    );
+    assert_eq!(j["final_state"], "FAULT");
+
+    // Stalled from the middle of a safe lift on.
+    let (code, j, _) =
+        replay_rewritten("safe_lift.csv", |k, us| if k >= 300 { 6_000_000 } else { us });
+    assert_eq!(code, 2);
+    assert_eq!(faults(&j)[0], (301, "clock stalled (time did not advance)".into()));
+    assert_eq!(j["final_state"], "FAULT");
+
+    // One duplicate timestamp: FAULT at that sample, then recovery.
+    let (code, j, _) =
+        replay_rewritten("safe_lift.csv", |k, us| if k == 200 { us - 20_000 } else { us });
+    assert_eq!(code, 2);
+    assert_eq!(faults(&j), vec![(200, "clock stalled (time did not advance)".into())]);
+    assert_eq!(j["final_state"], "NORMAL", "recovers after 1 s of good samples");
+
+    // A 0.5 s and a 1 h gap (and one of exactly 2³² µs, which a 32-bit
+    // clock alone could not see): FAULT at the sample after the gap.
+    for (gap_us, message) in [
+        (500_000, "time gap of 0.520 s"),
+        (3_600_000_000, "time gap of 2147.484 s or more"),
+        (WRAP_US, "time gap of 2147.484 s or more"),
+    ] {
+        let (code, j, _) =
+            replay_rewritten("safe_lift.csv", |k, us| if k >= 250 { us + gap_us } else { us });
+        assert_eq!(code, 2, "gap {gap_us} µs");
+        assert_eq!(faults(&j), vec![(250, message.to_string())], "gap {gap_us} µs");
+    }
+    // A gap of 5 periods (50 ms) is still allowed; 50.001 ms is not.
+    let (code, _, _) =
+        replay_rewritten("safe_lift.csv", |k, us| if k >= 250 { us + 30_000 } else { us });
+    assert_eq!(code, 0);
+    let (code, j, _) =
+        replay_rewritten("safe_lift.csv", |k, us| if k >= 250 { us + 30_001 } else { us });
+    assert_eq!((code, faults(&j)), (2, vec![(250, "time gap of 0.050 s".into())]));
+
+    // Time going backwards is a malformed file: the line is named, exit 1.
+    let (code, j, stderr) =
+        replay_rewritten("safe_lift.csv", |k, us| if k == 100 { us - 40_000 } else { us });
+    assert_eq!(code, 1);
+    assert_eq!(j["complete"], false);
+    // 2 comment lines + header: sample 100 is on line 104.
+    assert!(stderr.contains("line 104: field `t_s` goes backwards in time"), "{stderr}");
+}
+
+#[test]
+fn every_hostile_calibration_is_refused_with_exit_1_naming_the_key() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases = moment_limiter::config_file::hostile::cases();
+    assert!(cases.len() > 50);
+    for (k, (name, content, expect)) in cases.iter().enumerate() {
+        let cal = dir.path().join(format!("hostile_{k}.json"));
+        std::fs::write(&cal, content).unwrap();
+        let out = replay(&example("overload_lowering.csv"), &["--calibration", cal.to_str().unwrap()]);
+        let stderr = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{name}: {stderr}");
+        assert!(stderr.contains(expect), "{name}: `{stderr}` lacks `{expect}`");
+        assert!(out.stdout.is_empty(), "{name}: replayed anyway");
+        // The table of the issue's closing note (`-- --nocapture`).
+        eprintln!("| {name} | {} | {} |", out.status.code().unwrap_or(-1), stderr.trim());
+    }
+    // The good base file is accepted (so the refusals are the alterations').
+    let good = dir.path().join("good.json");
+    std::fs::write(&good, moment_limiter::config_file::hostile::GOOD).unwrap();
+    let out = replay(&example("safe_lift.csv"), &["--calibration", good.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+
+    // The calibration file from before the schema gets the upgrade message.
+    let old = dir.path().join("old.json");
+    std::fs::write(
+        &old,
+        r#"{"friction_up_n": 10011.5, "friction_down_n": 10011.5, "force_offset_n": 1932.4,
+            "p1_offset_bar": 0.0, "p2_offset_bar": 0.0, "angle_offset_deg": 0.0,
+            "samples_up": 328, "samples_down": 328,
+            "mean_residual_up_n": 11943.9, "mean_residual_down_n": -8079.0}"#,
+    )
+    .unwrap();
+    let out = replay(&example("safe_lift.csv"), &["--calibration", old.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(
+        text(&out.stderr).contains("run `crane-sim calibrate` again"),
+        "{}",
+        text(&out.stderr)
+    );
+}
+
+#[test]
+fn replay_without_calibration_says_so() {
+    let out = replay(&example("safe_lift.csv"), &["--json"]);
+    assert_eq!(out.status.code(), Some(0));
+    assert_eq!(json(&out)["calibrated"], false);
+    assert!(text(&out.stderr).contains("no --calibration given"), "{}", text(&out.stderr));
+    let cal = example("cal.json");
+    let out = replay(&example("safe_lift.csv"), &["--json", "--calibration", cal.to_str().unwrap()]);
+    assert_eq!(json(&out)["calibrated"], true);
+    assert!(out.stderr.is_empty(), "{}", text(&out.stderr));
+}
+
+#[test]
+fn negative_load_beyond_the_bound_is_a_fault() {
+    // A p1 zero offset the schema would refuse (50 bar), applied to the log
+    // itself: the 8 t overload reads as a large negative load.
+    let dir = tempfile::tempdir().unwrap();
+    let src = std::fs::read_to_string(example("overload_lowering.csv")).unwrap();
+    let mut dst = String::new();
+    for line in src.lines() {
+        let mut f: Vec<String> = line.split(',').map(str::to_string).collect();
+        if let Ok(p1) = f[1].parse::<f64>() {
+            f[1] = format!("{:.3}", (p1 - 50.0).max(0.0));
+        }
+        dst.push_str(&f.join(","));
+        dst.push('\n');
+    }
+    let log = dir.path().join("offset.csv");
+    std::fs::write(&log, dst).unwrap();
+    let out = replay(&log, &["--json"]);
+    assert_eq!(out.status.code(), Some(2));
+    let j = json(&out);
+    let f = faults(&j);
+    // −8.3 t·m from the first sample (50 Hz): FAULT once it held 1 s.
+    assert_eq!(f[0], (50, "load estimate implausibly negative".into()), "{j}");
+
+    // What an honest unloaded crane reads below zero is not a fault: standing
+    // at 85° after raising (static friction, about −2.2 t), a lowering ramp
+    // from 80°, and a fast lowering from 85° in which the synthetic p1 itself
+    // drops out of range (a sensor FAULT) and the load reads −5.4 t for a
+    // moment after it.
+    let cal = example("cal.json");
+    for (low, high, direction, profile, seed, reads_below, exit) in [
+        ("40", "85", "up", "cycloidal", "8", -2000.0, 0),
+        ("40", "80", "down", "cycloidal", "3", -700.0, 0),
+        ("40", "85", "down", "linear", "9", -5000.0, 2),
+    ] {
+        let label = format!("unloaded {low}°-{high}° {direction} {profile} seed {seed}");
+        let log = dir.path().join(format!("unloaded_{low}_{high}_{direction}.csv"));
+        let out = bin()
+            .args(["synth", "--load-kg", "0", "--duration", "10", "--rate-hz", "50"])
+            .args(["--low-deg", low, "--high-deg", high, "--direction", direction])
+            .args(["--profile", profile, "--seed", seed, "--out"])
+            .arg(&log)
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+        let min_load = read_min_load(&log, &cal);
+        assert!(min_load < reads_below, "{label}: reads down to {min_load} kg only");
+        let out = replay(&log, &["--json", "--calibration", cal.to_str().unwrap()]);
+        let j = json(&out);
+        assert_eq!(out.status.code(), Some(exit), "{label}: {j}");
+        assert!(
+            faults(&j).iter().all(|(_, f)| !f.contains("implausibly negative")),
+            "{label}: {j}"
+        );
+    }
+}
+
+/// The lowest load of a calibrated replay's trace (kg).
+fn read_min_load(log: &Path, cal: &Path) -> f64 {
+    let dir = tempfile::tempdir().unwrap();
+    let trace = dir.path().join("trace.csv");
+    let out = replay(
+        log,
+        &["--calibration", cal.to_str().unwrap(), "--trace", trace.to_str().unwrap()],
+    );
+    assert!(matches!(out.status.code(), Some(0 | 2)));
+    std::fs::read_to_string(&trace)
+        .unwrap()
+        .lines()
+        .skip(1)
+        .filter_map(|l| l.split(',').nth(1)?.parse::<f64>().ok())
+        .fold(f64::INFINITY, f64::min)
+}
+
+#[test]
+fn usage_errors_exit_1_help_and_version_exit_0() {
+    for args in [
+        vec!["replay", "--bogus"],
+        vec!["replay"],
+        vec!["replay", "a.csv", "b.csv"],
+        vec!["bogus-command"],
+        vec![],
+        vec!["chart", "--safety-factor", "abc"],
+        vec!["synth", "--profile", "square", "--out", "x.csv"],
+    ] {
+        let out = bin().args(&args).output().unwrap();
+        assert_eq!(out.status.code(), Some(1), "{args:?}: {}", text(&out.stderr));
+        assert!(!out.stderr.is_empty(), "{args:?}: no message");
+    }
+    for args in [vec!["--help"], vec!["--version"], vec!["replay", "--help"], vec!["help"]] {
+        let out = bin().args(&args).output().unwrap();
+        assert_eq!(out.status.code(), Some(0), "{args:?}");
+        assert!(!out.stdout.is_empty(), "{args:?}");
+    }
+    // A missing log is an input error: 1.
+    let out = replay(Path::new("/nonexistent/log.csv"), &[]);
+    assert_eq!(out.status.code(), Some(1));
+    // synth at a rate the limiter would fault on.
+    let out = bin()
+        .args(["synth", "--rate-hz", "10", "--out", "/dev/null"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    assert!(text(&out.stderr).contains("50 ms"), "{}", text(&out.stderr));
+}
+
+/// Runs `crane-sim args` with its stdout a pipe whose reader is already
+/// gone: every write fails with EPIPE.
+fn with_closed_stdout(args: &[&str]) -> Output {
+    let mut child = bin()
+        .args(args)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take());
+    child.wait_with_output().unwrap()
+}
+
+#[test]
+fn a_closed_stdout_ends_quietly_and_replay_keeps_its_exit_code() {
+    let overload = example("overload_lowering.csv");
+    let safe = example("safe_lift.csv");
+    for (log, code) in [(&overload, 2), (&safe, 0)] {
+        for json in [false, true] {
+            let mut args = vec!["replay", log.to_str().unwrap()];
+            if json {
+                args.push("--json");
+            }
+            let out = with_closed_stdout(&args);
+            let stderr = text(&out.stderr);
+            assert_eq!(out.status.code(), Some(code), "{args:?}: {stderr}");
+            assert!(!stderr.to_lowercase().contains("pipe"), "{args:?}: {stderr}");
+            assert!(!stderr.contains("error"), "{args:?}: {stderr}");
+        }
+    }
+    for args in [vec!["modes"], vec!["chart"], vec!["simulate", "--list"]] {
+        let out = with_closed_stdout(&args);
+        assert_eq!(out.status.code(), Some(0), "{args:?}: {}", text(&out.stderr));
+        assert!(out.stderr.is_empty(), "{args:?}: {}", text(&out.stderr));
+    }
+    // The shell pipeline of the issue, as a user types it.
+    let out = Command::new("bash")
+        .arg("-c")
+        .arg(format!(
+            "set -o pipefail; '{}' replay '{}' | head -1",
+            env!("CARGO_BIN_EXE_crane-sim"),
+            overload.display()
+        ))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out.stderr));
+    assert_eq!(text(&out.stdout).lines().count(), 1);
+    assert!(!text(&out.stderr).contains("error"), "{}", text(&out.stderr));
+}
+
+#[test]
+fn write_errors_are_errors() {
+    let Ok(full) = std::fs::OpenOptions::new().write(true).open("/dev/full") else {
+        eprintln!("SKIPPED: no /dev/full");
+        return;
+    };
+    for args in [
+        vec!["modes".to_string()],
+        vec!["chart".into()],
+        vec!["simulate".into(), "--list".into()],
+        vec!["replay".into(), example("safe_lift.csv").display().to_string()],
+    ] {
+        let out = bin()
+            .args(&args)
+            .stdout(full.try_clone().unwrap())
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(1), "{args:?}");
+        assert!(
+            text(&out.stderr).contains("cannot write to standard output"),
+            "{args:?}: {}",
+            text(&out.stderr)
+        );
+    }
+}
