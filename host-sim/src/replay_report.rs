@@ -120,10 +120,10 @@ fn state_bands(samples: &[ReplaySample]) -> Vec<Band> {
     let kind = |s: LimiterState| STATES.iter().position(|(st, _, _)| *st == s).unwrap_or(0);
     let mut bands: Vec<Band> = Vec::new();
     for (i, s) in samples.iter().enumerate() {
-        let t_end = samples.get(i + 1).map_or(s.t_s, |n| n.t_s).into();
+        let t_end = samples.get(i + 1).map_or(s.t_s, |n| n.t_s);
         match bands.last_mut() {
             Some(b) if b.kind == kind(s.state) => b.x1 = t_end,
-            _ => bands.push(Band { x0: s.t_s.into(), x1: t_end, kind: kind(s.state) }),
+            _ => bands.push(Band { x0: s.t_s, x1: t_end, kind: kind(s.state) }),
         }
     }
     bands
