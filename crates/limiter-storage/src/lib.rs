@@ -1,0 +1,27 @@
+//! # limiter-storage
+//!
+//! What the load moment limiter keeps through a power cut, and how it proves
+//! its own image is intact:
+//!
+//! - [`store`]: the configuration and calibration (opaque, versioned byte blobs
+//!   with a CRC-32), the fault latch, and the event log (a queue of fixed-size
+//!   [`event::EventRecord`]s), on any `embedded-storage` [`NorFlash`] through
+//!   `sequential-storage`, whose every update is power-cut safe (an interrupted
+//!   write or erase leaves the previous value readable);
+//! - [`crc`]: CRC-32 (IEEE 802.3, the zlib one), used for blobs and the image;
+//! - [`image`]: the image checksum stamp written after linking
+//!   (`stamp-image`, a host tool in this crate) and its verification at power-up;
+//! - [`latch`]: reset causes, the fault record the exception handlers leave in
+//!   RAM, and the operator's acknowledgement that releases a latched fault.
+//!
+//! `no_std`, no heap, no panics: every failure is a typed error.
+//!
+//! [`NorFlash`]: embedded_storage::nor_flash::NorFlash
+#![cfg_attr(not(test), no_std)]
+
+pub mod blocking;
+pub mod crc;
+pub mod event;
+pub mod image;
+pub mod latch;
+pub mod store;
