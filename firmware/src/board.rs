@@ -46,6 +46,7 @@ use defmt_rtt as _; // defmt transport on the board: RTT, read by probe-rs.
 use embedded_hal_bus::spi::ExclusiveDevice;
 use limiter_drivers::{AlarmOutputs, ChannelMap, Mcp3208, Polarity};
 use limiter_storage::event::{EventKind, EventRecord};
+use limiter_storage::journal::JournalError;
 use limiter_storage::latch::{self, Acknowledge, FaultKind, LatchState, ResetCause};
 use limiter_storage::store::{Key, Layout, Store, BLOB_MAX};
 use moment_limiter::conversion::SensorConversion;
@@ -179,9 +180,58 @@ fn storage_layout() -> Layout {
     }
 }
 
+/// The MCU's flash for the persisted store: stm32f4xx-hal's `NorFlash`
+/// programs and erases; reads are done here, bounds-checked, because the
+/// HAL's read slices the flash with a panicking index.
+struct BoardFlash<'a>(stm32f4xx_hal::flash::UnlockedFlash<'a>);
+
+impl limiter_storage::journal::Flash for BoardFlash<'_> {
+    fn read(&mut self, at: u32, buf: &mut [u8]) -> Result<(), JournalError> {
+        const FLASH_BASE: usize = 0x0800_0000;
+        const FLASH_LEN: usize = 1024 * 1024;
+        let start = at as usize;
+        match start.checked_add(buf.len()) {
+            Some(end) if end <= FLASH_LEN => {
+                // SAFETY: [FLASH_BASE + start, FLASH_BASE + end) lies inside
+                // the 1 MiB flash, always mapped and readable; the store only
+                // reads ranges it owns, which nothing programs concurrently.
+                unsafe {
+                    core::ptr::copy_nonoverlapping(
+                        (FLASH_BASE + start) as *const u8,
+                        buf.as_mut_ptr(),
+                        buf.len(),
+                    );
+                }
+                Ok(())
+            }
+            _ => Err(JournalError::Flash),
+        }
+    }
+
+    fn write(&mut self, at: u32, buf: &[u8]) -> Result<(), JournalError> {
+        embedded_storage::nor_flash::NorFlash::write(&mut self.0, at, buf)
+            .map_err(|_| JournalError::Flash)
+    }
+
+    fn erase(&mut self, from: u32, to: u32) -> Result<(), JournalError> {
+        embedded_storage::nor_flash::NorFlash::erase(&mut self.0, from, to)
+            .map_err(|_| JournalError::Flash)
+    }
+
+    fn geometry(&self) -> (usize, usize, usize) {
+        use embedded_storage::nor_flash::{NorFlash, ReadNorFlash};
+        use stm32f4xx_hal::flash::UnlockedFlash as U;
+        (
+            <U as ReadNorFlash>::READ_SIZE,
+            <U as NorFlash>::WRITE_SIZE,
+            <U as NorFlash>::ERASE_SIZE,
+        )
+    }
+}
+
 /// Appends an event; a failure is logged, not fatal (the outputs stay cut
 /// where the event mattered).
-fn log_event<F: embedded_storage::nor_flash::NorFlash>(
+fn log_event<F: limiter_storage::journal::Flash>(
     store: &mut Store<F>,
     boot: u32,
     kind: EventKind,
@@ -197,7 +247,7 @@ fn log_event<F: embedded_storage::nor_flash::NorFlash>(
         uptime_ms,
     };
     if let Err(e) = store.append_event(&record) {
-        defmt::error!("event log: {}", defmt::Display2Format(&e));
+        defmt::error!("event log: {=str}", e.as_str());
     }
 }
 
@@ -286,13 +336,12 @@ pub fn run() -> ! {
 
     let config = LimiterConfig::<f32>::standard();
     {
-        let mut flash = locked_flash.unlocked();
-        let mut store = Store::new(&mut flash, storage_layout());
+        let mut store = Store::new(BoardFlash(locked_flash.unlocked()), storage_layout());
         let boot = store.next_boot().unwrap_or(0);
         log_event(&mut store, boot, EventKind::Boot, cause.code(), 0, 0);
         // An unreadable latch is a latched one: the limiter cannot vouch for it.
         let before = store.latch().unwrap_or_else(|e| {
-            defmt::error!("fault latch unreadable: {}", defmt::Display2Format(&e));
+            defmt::error!("fault latch unreadable: {=str}", e.as_str());
             LatchState {
                 active: true,
                 cause: 0xFE,
@@ -302,7 +351,7 @@ pub fn run() -> ! {
         let latch = before.after_reset(cause);
         if latch != before {
             if let Err(e) = store.set_latch(latch) {
-                defmt::error!("fault latch not persisted: {}", defmt::Display2Format(&e));
+                defmt::error!("fault latch not persisted: {=str}", e.as_str());
             }
         }
         if latch.active {
@@ -321,10 +370,7 @@ pub fn run() -> ! {
             );
             let waited_ms = wait_for_acknowledgement(&mut hw);
             if let Err(e) = store.set_latch(latch.acknowledged()) {
-                defmt::error!(
-                    "acknowledgement not persisted: {}",
-                    defmt::Display2Format(&e)
-                );
+                defmt::error!("acknowledgement not persisted: {=str}", e.as_str());
             }
             log_event(
                 &mut store,
@@ -342,7 +388,7 @@ pub fn run() -> ! {
         match store.read_blob(Key::Calibration, &mut blob) {
             Ok(Some(b)) => defmt::info!("calibration v{}: {} bytes", b.version, b.bytes.len()),
             Ok(None) => defmt::warn!("no calibration stored"),
-            Err(e) => defmt::error!("calibration unreadable: {}", defmt::Display2Format(&e)),
+            Err(e) => defmt::error!("calibration unreadable: {=str}", e.as_str()),
         }
 
         // Power-up self-test, outputs cut.
@@ -365,9 +411,12 @@ pub fn run() -> ! {
                     0,
                     0,
                 );
-                defmt::error!("self-test failed: {}", defmt::Display2Format(&failure));
+                defmt::error!(
+                    "self-test failed: check {} (1 RAM, 2 image, 3 model, 4 outputs, 5 sensors), detail 0x{:x}",
+                    failure.code(),
+                    failure.detail()
+                );
                 drop(store);
-                drop(flash);
                 stay_cut(&mut hw)
             }
         }
@@ -376,10 +425,10 @@ pub fn run() -> ! {
     let mut limiter = match Limiter::new(crate::model::hook_load_model(), config) {
         Ok(limiter) => limiter,
         Err(e) => {
-            defmt::error!(
-                "limiter configuration refused: {}",
-                defmt::Display2Format(&e)
-            );
+            // Not `Display2Format`: core::fmt's padding code costs 2 KB of
+            // the board's flash budget; the reason is in the debug build's logs.
+            let _ = e;
+            defmt::error!("limiter configuration refused");
             stay_cut(&mut hw)
         }
     };

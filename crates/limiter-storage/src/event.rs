@@ -62,24 +62,24 @@ impl EventRecord {
     /// The record's bytes (little-endian; byte 6–7 reserved, zero).
     pub fn encode(&self) -> [u8; RECORD_LEN] {
         let mut b = [0u8; RECORD_LEN];
-        b[0..4].copy_from_slice(&self.boot.to_le_bytes());
+        crate::put(&mut b, 0, &self.boot.to_le_bytes());
         b[4] = self.kind as u8;
         b[5] = self.detail;
-        b[8..12].copy_from_slice(&self.value.to_le_bytes());
-        b[12..16].copy_from_slice(&self.uptime_ms.to_le_bytes());
+        crate::put(&mut b, 8, &self.value.to_le_bytes());
+        crate::put(&mut b, 12, &self.uptime_ms.to_le_bytes());
         b
     }
 
     /// A record from its bytes; `None` if the length or the kind is wrong.
     pub fn decode(bytes: &[u8]) -> Option<Self> {
         let b: &[u8; RECORD_LEN] = bytes.try_into().ok()?;
-        let word = |i: usize| u32::from_le_bytes([b[i], b[i + 1], b[i + 2], b[i + 3]]);
+        let [b0, b1, b2, b3, kind, detail, _, _, v0, v1, v2, v3, u0, u1, u2, u3] = *b;
         Some(EventRecord {
-            boot: word(0),
-            kind: EventKind::from_code(b[4])?,
-            detail: b[5],
-            value: word(8),
-            uptime_ms: word(12),
+            boot: u32::from_le_bytes([b0, b1, b2, b3]),
+            kind: EventKind::from_code(kind)?,
+            detail,
+            value: u32::from_le_bytes([v0, v1, v2, v3]),
+            uptime_ms: u32::from_le_bytes([u0, u1, u2, u3]),
         })
     }
 }

@@ -84,8 +84,8 @@ pub struct Verified {
 }
 
 fn word(bytes: &[u8], at: usize) -> Option<u32> {
-    let b = bytes.get(at..at.checked_add(4)?)?;
-    Some(u32::from_le_bytes([b[0], b[1], b[2], b[3]]))
+    let b = bytes.get(at..)?.first_chunk::<4>()?;
+    Some(u32::from_le_bytes(*b))
 }
 
 /// CRC-32 of `image[..length]` with the stamp's 8 field bytes at
@@ -145,8 +145,8 @@ pub fn stamp(image: &mut [u8], stamp_offset: usize) -> Result<Verified, ImageErr
     let fields = image
         .get_mut(stamp_offset + 8..stamp_offset + STAMP_LEN)
         .ok_or(ImageError::NoStamp)?;
-    fields[..4].copy_from_slice(&length32.to_le_bytes());
-    fields[4..].copy_from_slice(&crc.to_le_bytes());
+    crate::put(fields, 0, &length32.to_le_bytes());
+    crate::put(fields, 4, &crc.to_le_bytes());
     Ok(Verified {
         length: length32,
         crc,

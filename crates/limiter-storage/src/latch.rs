@@ -257,7 +257,7 @@ impl LatchState {
         let mut b = [0u8; LATCH_LEN];
         b[0] = u8::from(self.active);
         b[1] = self.cause;
-        b[4..8].copy_from_slice(&self.count.to_le_bytes());
+        crate::put(&mut b, 4, &self.count.to_le_bytes());
         b
     }
 

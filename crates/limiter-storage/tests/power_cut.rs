@@ -257,12 +257,11 @@ fn calibration_survives_a_cut_at_every_step_word_writes() {
         cuts > 500,
         "the sweeps cut at only {cuts} steps: the update is not being exercised"
     );
-    // Both outcomes occur (the switch from old to new is atomic, not absent),
-    // and some cuts fall in a page erase (the page switch is exercised).
-    assert!(
-        old > 0 && new > 0 && erase > 0,
-        "old {old}, new {new}, erase {erase}"
-    );
+    // Cuts before the commit read the old value (a cut in the last write,
+    // the record header, as a rule too: the header is the commit), and some
+    // cuts fall in a page erase (the bank switch is exercised).
+    assert!(old > 0 && erase > 0, "old {old}, new {new}, erase {erase}");
+    assert_eq!(old + new, cuts, "every cut read old or new");
     eprintln!(
         "calibration sweeps: {cuts} cuts, {old} read old, {new} read new, {erase} during an erase"
     );
@@ -364,7 +363,9 @@ fn event_log_keeps_every_complete_record_through_a_cut() {
         appended.push(e);
     }
     let (got, _) = events(base);
-    assert!(got.len() > 50, "only {} events kept", got.len());
+    // 4 KiB = two banks of 2 KiB, 24 bytes a record: a bank holds 85, and a
+    // compaction keeps the newest 42.
+    assert!(got.len() >= 42, "only {} events kept", got.len());
     assert_eq!(got.last(), appended.last(), "the newest event is kept");
     assert!(
         got.len() < appended.len(),
