@@ -478,11 +478,9 @@ impl Journal {
                     size = r.size();
                     Ok(())
                 })?;
-                let room = if size == 0 {
-                    0
-                } else {
-                    (bank_len - BANK_HEADER) / 2 / size
-                };
+                let room = ((bank_len - BANK_HEADER) / 2)
+                    .checked_div(size)
+                    .unwrap_or(0);
                 let skip = valid.saturating_sub(room);
                 let mut index = 0u32;
                 self.for_each(flash, |flash, r| {

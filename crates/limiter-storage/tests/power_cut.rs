@@ -390,14 +390,14 @@ fn a_flipped_bit_in_flash_never_reads_as_a_value() {
         bad.mem[at] ^= 0x04;
         let mut s = Store::new(bad, layout());
         let mut out = [0u8; 1024];
-        match s.read_blob(Key::Calibration, &mut out) {
-            Ok(Some(b)) => assert!(
+        // None or an error is acceptable; a value must be one that was stored.
+        if let Ok(Some(b)) = s.read_blob(Key::Calibration, &mut out) {
+            assert!(
                 stored
                     .iter()
                     .any(|(v, s)| *v == b.version && s[..] == *b.bytes),
                 "bit flip at {at} read as a value never stored"
-            ),
-            Ok(None) | Err(_) => {}
+            );
         }
     }
 }
