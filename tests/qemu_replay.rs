@@ -246,9 +246,7 @@ fn in_process_f32(log: &Path, calibration: Option<&Path>) -> (String, i32) {
         c.p2_offset_bar = f("p2_offset_bar");
         c.angle_offset_deg = f("angle_offset_deg");
     }
-    let mut replay = Replay::new(
-        Limiter::new(crane_model::thesis_modes::thesis_load_model_f32(), config).unwrap(),
-    );
+    let mut replay = Replay::new(Limiter::new(crane_model::thesis_modes::thesis_load_model_f32(), config).unwrap());
     let mut parser = LogParser::<f32>::new();
     let mut out = String::new();
     let text = std::fs::read_to_string(log).unwrap();
