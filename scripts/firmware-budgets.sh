@@ -4,6 +4,9 @@
 #                          and the board build when it builds)
 #   peak stack             cortex-m-rt `paint-stack`, scanned by the firmware
 #                          after replaying a log under QEMU
+#   self-test duration     the power-up self-test (RAM March C-, image CRC-32 of a
+#                          stamped copy, model reference), SysTick under -icount,
+#                          converted to instructions the same way
 #   instructions / cycle   SysTick under `qemu-system-arm -icount shift=0`
 #                          (1 instruction = 1 ns of virtual time), converted to
 #                          instructions with an in-firmware calibration loop of
@@ -60,6 +63,28 @@ printf '%-28s %10d %10d  %s\n' "static RAM (bytes)" "$ram" $((16 * 1024)) "$(ver
 printf '%-28s %10d %10d  %s\n' "peak stack (bytes)" "$stack" $((32 * 1024)) "$(verdict "$stack" $((32 * 1024)))"
 printf '%-28s %10d %10d  %s\n' "instructions/cycle (max)" "$imax" 100000 "$(verdict "$imax" 100000)"
 printf '%-28s %10d %10s\n' "instructions/cycle (mean)" "$imean" "-"
+# The self-test on a stamped copy of the image (the CRC then covers it all).
+STAMPED_ELF=target/$TARGET/release/firmware-stamped
+cp "$ELF" "$STAMPED_ELF"
+cargo build -q --release -p limiter-storage --bin stamp-image
+target/release/stamp-image "$STAMPED_ELF" >/dev/null
+st=$(QEMU_EXTRA="-icount shift=0" scripts/qemu-runner.sh "$STAMPED_ELF" "$log" --self-test 2>&1 >/dev/null | grep '^self-test: passed' || true)
+if [ -n "$st" ]; then
+    sfield() { sed -n "s/.* $1=\([0-9]*\).*/\1/p" <<<"$st"; }
+    sinstr=$(( $(sfield ticks) * $(sfield calibration_instructions) / $(sfield calibration_ticks) ))
+    printf '%-28s %10d %10s  %s\n' "self-test (instructions)" "$sinstr" "-" "$(sed 's/^self-test: passed //; s/ ticks=.*//' <<<"$st")"
+    # Of which the image CRC; the board's image is smaller: scale that part.
+    crc_instr=$(( $(sfield image_ticks) * $(sfield calibration_instructions) / $(sfield calibration_ticks) ))
+    img_bytes=$(sed -n 's/.*image=crc32:[0-9a-f]*\/\([0-9]*\)B.*/\1/p' <<<"$st")
+    printf '%-28s %10d %10s  %s\n' "  of which image CRC-32" "$crc_instr" "-" "$img_bytes bytes of image"
+    if [ -f "$BOARD_ELF" ] && [ -n "$img_bytes" ]; then
+        read -r bflash _ < <(size_of "$BOARD_ELF")
+        board_instr=$(( sinstr - crc_instr + crc_instr * bflash / img_bytes ))
+        printf '%-28s %10d %10s  %s\n' "board self-test (est. instr)" "$board_instr" "-" "~$(( board_instr / 168 )) us at 168 MHz, 1 instr/cycle; output readback and 3 ADC reads not included"
+    fi
+else
+    echo "self-test: no report line from QEMU"
+fi
 if [ -f "$BOARD_ELF" ]; then
     read -r bflash bram < <(size_of "$BOARD_ELF")
     printf '%-28s %10d %10d  %s\n' "board build flash (bytes)" "$bflash" $((64 * 1024)) "$(verdict "$bflash" $((64 * 1024)))"

@@ -18,7 +18,12 @@
 //! formatting) → `crane-model` (`HookLoadModel`) ; `limiter-drivers` implements
 //! the limiter's `SensorInputs`/`Outputs` over embedded-hal 1.0.
 //!
-//! A panic cuts the outputs first (`panic`). No heap anywhere.
+//! Failing safe: a panic (`panic`) and every fault exception (`fault`) cut the
+//! outputs first, record why in RAM that survives the reset, and wait for the
+//! watchdog; the board reads the reset cause at start-up and keeps the outputs
+//! cut after a fault or watchdog reset until an operator acknowledges
+//! (`board`); a power-up self-test (`selftest`) must pass before the limiter
+//! runs. No heap anywhere.
 //!
 //! On a host target (e.g. `cargo check --workspace`) the crate compiles to a stub
 //! `main` that says to build for `thumbv7em-none-eabihf`: the firmware is only
@@ -48,9 +53,15 @@ use cortex_m as _; // critical-section implementation for defmt
 use cortex_m_rt::entry;
 
 #[cfg(target_os = "none")]
+mod fault;
+#[cfg(target_os = "none")]
 pub mod model;
 #[cfg(target_os = "none")]
+pub mod model_reference;
+#[cfg(target_os = "none")]
 mod panic;
+#[cfg(target_os = "none")]
+mod selftest;
 
 #[cfg(feature = "board")]
 #[cfg(target_os = "none")]
@@ -61,16 +72,21 @@ mod defmt_semihosting;
 #[cfg(feature = "qemu")]
 #[cfg(target_os = "none")]
 pub mod qemu;
+#[cfg(feature = "qemu")]
+#[cfg(target_os = "none")]
+mod sim_outputs;
 
-/// Per-build hooks the panic handler needs.
+/// Per-build hooks the panic and fault handlers need.
 #[cfg(target_os = "none")]
 mod platform {
     #[cfg(feature = "board")]
-    pub use crate::board::{cut_outputs_now, halt_after_panic};
+    pub use crate::board::{cut_outputs_now, halt_after_fault, halt_after_panic};
 
-    /// Under QEMU there are no physical outputs to cut.
+    /// Under QEMU the outputs are the simulated pins (`sim_outputs`).
     #[cfg(feature = "qemu")]
-    pub fn cut_outputs_now() {}
+    pub fn cut_outputs_now() {
+        crate::sim_outputs::cut_now();
+    }
 
     /// Under QEMU: report on stderr and exit with status 101.
     #[cfg(feature = "qemu")]
@@ -81,16 +97,39 @@ mod platform {
         err.flush();
         crate::qemu::semihosting::exit(101)
     }
+
+    /// Under QEMU (no watchdog model): report the fault and the outputs' state
+    /// on stderr, and exit 2, the FAULT status.
+    #[cfg(feature = "qemu")]
+    pub fn halt_after_fault(kind: limiter_storage::latch::FaultKind, detail: u32) -> ! {
+        use core::fmt::Write;
+        let mut err = crate::qemu::semihosting::HostWriter::stderr();
+        let _ = write!(
+            err,
+            "firmware fault: {} (0x{detail:08x}); outputs: ",
+            kind.as_str()
+        );
+        let _ = crate::sim_outputs::describe(&mut err);
+        let _ = writeln!(err);
+        err.flush();
+        crate::qemu::semihosting::exit(crate::qemu_boot::EXIT_FAULT)
+    }
 }
+
+#[cfg(feature = "qemu")]
+#[cfg(target_os = "none")]
+mod qemu_boot;
 
 #[cfg(feature = "qemu")]
 #[cfg(target_os = "none")]
 #[entry]
 fn main() -> ! {
     // `take` only fails if called twice; `main` runs once.
-    let Some(core) = cortex_m::Peripherals::take() else {
+    let Some(mut core) = cortex_m::Peripherals::take() else {
         qemu::semihosting::exit(qemu::EXIT_INPUT)
     };
+    // Self-test first (outputs cut), then the firmware-only test switches.
+    qemu_boot::boot(&mut core.SYST);
     let code = qemu::run(core.SYST);
     qemu::semihosting::exit(code)
 }

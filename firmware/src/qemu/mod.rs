@@ -51,6 +51,8 @@ fn parse_args(cmdline: &str) -> Result<Args<'_>, &'static str> {
         match word {
             "--json" => args.json = true,
             "--budgets" => args.budgets = true,
+            // Handled before the replay by `qemu_boot` (self-test report, fault test).
+            "--self-test" | "--trigger-hardfault" => {}
             "--calibration" => {
                 args.calibration = Some(words.next().ok_or("--calibration needs a file")?)
             }
