@@ -145,6 +145,14 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         }
     }
 
+    /// The rope force at C from the revolute-at-C multipliers (rows 11–12): the pin
+    /// pushes body 5 with λ_C, so the tension along the rope (pulling the load
+    /// towards C, opposite to the rope axis e5) is −λ_C·e5.
+    pub fn rope_tension_n(&self, lambda: &[T; CONSTRAINTS], swing_axis: Vector2<T>) -> T {
+        let l = Vector2::new(lambda[11], lambda[12]);
+        -l.dot(&swing_axis)
+    }
+
     /// The thesis's way (eq. 2.68): one solve of the augmented system
     /// [M Bᵀ; B 0]·[ẏ; λ] = [Q + f + f_s + f_d; γ] for accelerations and multipliers.
     pub fn solve_augmented(

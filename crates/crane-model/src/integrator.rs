@@ -79,6 +79,19 @@ impl<T: Real, const M: usize> State<T, M> {
         act_end: ActuatorMotion<T>,
         tolerance: T,
     ) -> Result<StepStats, ModelError> {
+        self.step_with_load(model, h, act_end, self.load_kg, tolerance)
+    }
+
+    /// [`Self::step`] with the hook load `load_end` at the end of the step (a
+    /// lift-off): the equations at the new state carry the new load.
+    pub fn step_with_load(
+        &mut self,
+        model: &CraneModel<T, M>,
+        h: T,
+        act_end: ActuatorMotion<T>,
+        load_end: T,
+        tolerance: T,
+    ) -> Result<StepStats, ModelError> {
         let half = T::lit(0.5);
         let quarter_h2 = h * h * T::lit(0.25);
         let t1 = self.t_s + h;
@@ -97,7 +110,7 @@ impl<T: Real, const M: usize> State<T, M> {
             f.swing_rate = z0.swing_rate + (a0_sw + a_sw) * (h * half);
             f
         };
-        let rigid = model.rigid_motion(act_end, self.load_kg)?;
+        let rigid = model.rigid_motion(act_end, load_end)?;
         let mut jacobian = None;
         for iteration in 1..=MAX_ITERATIONS {
             let free = predict(&a_eta, a_sw);
@@ -136,7 +149,7 @@ impl<T: Real, const M: usize> State<T, M> {
                     free,
                     eta_accel: a_eta,
                     swing_accel: a_sw,
-                    load_kg: self.load_kg,
+                    load_kg: load_end,
                 };
                 return Ok(StepStats {
                     iterations: iteration,

@@ -26,6 +26,7 @@ pub mod modal;
 pub mod multibody;
 pub mod profile;
 pub mod real;
+pub mod rope;
 pub mod section;
 pub mod simulation;
 pub mod statics;
