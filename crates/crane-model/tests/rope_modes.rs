@@ -291,3 +291,249 @@ fn thesis_rope_reproduces_the_numbers_of_the_code_before_rope_modes() {
         println!("{name}: worst relative gap {worst:e}");
     }
 }
+
+use crane_model::dense::Square;
+use crane_model::eigen::generalized_eigen;
+use crane_model::fe::{MAX_DOF, DOF_PER_NODE};
+use crane_model::integrator::State;
+use crane_model::modal::ModalAnalysis;
+use crane_model::multibody::FreeCoordinates;
+use crane_model::profile::{ActuatorMotion, RampShape};
+use crane_model::rope::{RopeChoice, RopeMode};
+use crane_model::simulation::{Maneuver, Program, Segment};
+use nalgebra::{SMatrix, SVector};
+type M5 = SMatrix<f64, 5, 5>;
+
+/// The held-rope model with the clearance length at `deg` (the load 1 m up there).
+fn held_at(model: &ThesisModel<f64>, deg: f64) -> ThesisModel<f64> {
+    let l = model.clearance_length_m(deg.to_radians()).expect("length");
+    model.with_rope(RopeMode::Held { length_m: l })
+}
+
+fn still(model: &ThesisModel<f64>, deg: f64) -> ActuatorMotion<f64> {
+    model.actuator_at(deg.to_radians(), 0.0)
+}
+
+/// Independent: the boom's finite-element model (12 elements, all 39 dof, the
+/// modes' boundary conditions) with the rope and load as a lumped mass at the tip
+/// node acting only vertically (a hanging load follows C vertically, and
+/// horizontally only at its slow pendulum period): K·x = ω²(M + m·v·vᵀ)·x, v the
+/// vertical in the boom frame at node 13. Lowest bending frequency (rad/s).
+fn fe_tip_mass_bending_rad_s(crane: &CraneData, deg: f64, tip_mass_kg: f64) -> f64 {
+    let an = ModalAnalysis::<f64>::new(crane, MeshRefinement::THESIS).expect("analysis");
+    let n = an.mesh.n_dof();
+    let mut mass = an.mass.clone();
+    let tip = an.mesh.n_nodes() - 1;
+    let (u, w) = (DOF_PER_NODE * tip, DOF_PER_NODE * tip + 1);
+    let th = deg.to_radians();
+    let v = [(u, th.sin()), (w, th.cos())];
+    for &(i, vi) in &v {
+        for &(j, vj) in &v {
+            mass.add(i, j, tip_mass_kg * vi * vj);
+        }
+    }
+    let fixed = [0, 1, DOF_PER_NODE * an.lug_node + 1, DOF_PER_NODE * an.lug_node + 2];
+    let free: Vec<usize> = (0..n).filter(|d| !fixed.contains(d)).collect();
+    let k: Square<f64, MAX_DOF> = an.stiffness.select(&free).expect("K");
+    let m: Square<f64, MAX_DOF> = mass.select(&free).expect("M");
+    let pairs = generalized_eigen(&k, &m).expect("eigen");
+    // The lowest mode is the first bending of A–C loaded at the tip (the
+    // longitudinal and the foot modes are far higher).
+    pairs.values[0].sqrt()
+}
+
+/// The held model's bounce frequency: the equations of motion linearized at rest
+/// (actuator still) about equilibrium, mass matrix of the free coordinates and the
+/// stiffness by central differences of the generalized forces; the second-lowest
+/// eigenvalue (the lowest is the pendulum swing) (rad/s).
+fn held_bounce_rad_s(model: &ThesisModel<f64>, deg: f64, load: f64) -> (f64, f64) {
+    let act = still(model, deg);
+    let rest = model.equilibrium_state(deg.to_radians(), load).expect("equilibrium");
+    let forces = |q: &[f64; 5]| -> SVector<f64, 5> {
+        let mut f = rest;
+        f.eta.copy_from_slice(&q[..4]);
+        f.swing_rad = q[4];
+        let cfg = model.kinematics(act, load, &f).expect("kinematics");
+        let eq = model.reduced_equations(&cfg);
+        SVector::<f64, 5>::from_iterator(eq.force_eta.iter().copied().chain([eq.force_swing]))
+    };
+    let q0 = [rest.eta[0], rest.eta[1], rest.eta[2], rest.eta[3], rest.swing_rad];
+    let mut k = M5::zeros();
+    for j in 0..5 {
+        let h = if j < 4 { 1e-7 } else { 1e-6 };
+        let (mut qp, mut qm) = (q0, q0);
+        qp[j] += h;
+        qm[j] -= h;
+        let col = -(forces(&qp) - forces(&qm)) / (2.0 * h);
+        k.set_column(j, &col);
+    }
+    let k = (&k + k.transpose()) * 0.5;
+    let cfg = model.kinematics(act, load, &rest).expect("kinematics");
+    let blk = model.reduced_equations(&cfg).mass;
+    let mut m = M5::zeros();
+    for i in 0..4 {
+        for j in 0..4 {
+            m[(i, j)] = blk.a[(i, j)];
+        }
+        m[(i, 4)] = blk.b[i];
+        m[(4, i)] = blk.b[i];
+    }
+    m[(4, 4)] = blk.c;
+    let l = m.cholesky().expect("M positive definite").l();
+    let li = l.clone().try_inverse().expect("L invertible");
+    let c = &li * k * li.transpose();
+    let c = (&c + c.transpose()) * 0.5;
+    let mut ev: Vec<f64> = c.symmetric_eigen().eigenvalues.iter().copied().collect();
+    ev.sort_by(|a, b| a.total_cmp(b));
+    (ev[0].sqrt(), ev[1].sqrt())
+}
+
+#[test]
+fn held_bounce_frequency_at_40_deg_matches_the_boom_with_a_tip_mass() {
+    let crane = CraneData::coles_mobile_930();
+    let base = model();
+    let held = held_at(&base, 40.0);
+    let l = held.hanging_length_m(0.0).expect("length");
+    for load in [0.0, 3300.0, 7290.0] {
+        let (swing, bounce) = held_bounce_rad_s(&held, 40.0, load);
+        let tip_mass = load + base.rope_kg_per_m * l;
+        let fe = fe_tip_mass_bending_rad_s(&crane, 40.0, tip_mass);
+        let gap = bounce / fe - 1.0;
+        println!(
+            "W = {load} kg, L = {l:.3} m: held model bounce {:.4} Hz, FE boom + {tip_mass:.1} kg tip mass {:.4} Hz (gap {:+.2} %); swing {:.3} s (2π√(L/g) = {:.3} s)",
+            bounce / (2.0 * std::f64::consts::PI),
+            fe / (2.0 * std::f64::consts::PI),
+            100.0 * gap,
+            2.0 * std::f64::consts::PI / swing,
+            2.0 * std::f64::consts::PI * (l / base.gravity_m_s2).sqrt()
+        );
+        assert!(gap.abs() < 0.03, "W = {load}: bounce {bounce} vs FE {fe}");
+    }
+}
+
+/// Total energy with the actuator locked: kinetic ½ẏᵀMẏ over all coordinates,
+/// gravity potential of the boom's deformable part and of body 5, strain ½Σω²η²
+/// (as in `dynamics_checks.rs`; the rigid bodies 1–4 do not move).
+fn energy(model: &ThesisModel<f64>, act: ActuatorMotion<f64>, load: f64, free: &FreeCoordinates<f64, 4>) -> f64 {
+    let cfg = model.kinematics(act, load, free).expect("kinematics");
+    let sys = model.full_system(&cfg).expect("full system");
+    let mut kinetic = 0.0;
+    for i in 0..sys.n {
+        for j in 0..sys.n {
+            kinetic += 0.5 * sys.velocity[i] * sys.mass.get(i, j) * sys.velocity[j];
+        }
+    }
+    let g = model.gravity_m_s2;
+    let m = &model.modes;
+    let (s1, c1) = (cfg.mech.boom.angle.sin(), cfg.mech.boom.angle.cos());
+    let (mut sx, mut sy, mut strain) = (m.first_moment_rest[0], m.first_moment_rest[1], 0.0);
+    for k in 0..4 {
+        sx += m.first_moment_modes[0][k] * free.eta[k];
+        sy += m.first_moment_modes[1][k] * free.eta[k];
+        strain += 0.5 * m.omega_rad_s[k] * m.omega_rad_s[k] * free.eta[k] * free.eta[k];
+    }
+    let p = &cfg.pendulum;
+    kinetic + g * (s1 * sx + c1 * sy) + g * (p.mass_kg * cfg.tip_position.y + p.first_moment_kg_m * free.swing_rad.sin()) + strain
+}
+
+#[test]
+fn held_energy_is_conserved_at_the_production_step_with_damping_off_and_actuator_still() {
+    let mut base = model();
+    base.modes.damping = [0.0; 4];
+    let held = held_at(&base, 40.0);
+    let (deg, load) = (40.0, 3300.0);
+    let act = still(&held, deg);
+    let rest = held.equilibrium_state(deg.to_radians(), load).expect("equilibrium");
+    let e_rest = energy(&held, act, load, &rest);
+    // Off equilibrium: the boom bent as it would be under twice the load (a bounce,
+    // released from there) and the load swung 0.05 rad.
+    let mut free = held.equilibrium_state(deg.to_radians(), 2.0 * load).expect("bent");
+    free.swing_rad += 0.05;
+    let tip_of = |f: &FreeCoordinates<f64, 4>| -> f64 { (0..4).map(|k| held.modes.tip_modes[1][k] * (f.eta[k] - rest.eta[k])).sum() };
+    let released = tip_of(&free).abs();
+    let e0 = energy(&held, act, load, &free);
+    let oscillation = e0 - e_rest;
+    assert!(oscillation > 0.0);
+    let opts = SimulationOptions::for_type::<f64>();
+    let h = opts.step_s;
+    assert_eq!(h, 2e-3, "production step");
+    let (mut st, _) = State::new(&held, 0.0, act, load, free).expect("state");
+    let (mut worst, mut max_tip, mut max_swing) = (0.0f64, 0.0f64, 0.0f64);
+    for _ in 0..(10.0 / h).round() as usize {
+        st.step(&held, h, act, opts.tolerance).expect("step");
+        let e = energy(&held, act, load, &st.free);
+        worst = worst.max((e - e0).abs());
+        max_tip = max_tip.max(tip_of(&st.free).abs());
+        max_swing = max_swing.max((st.free.swing_rad - rest.swing_rad).abs());
+    }
+    let rel = worst / oscillation;
+    println!("released {released:.4} m off equilibrium at the tip; oscillation energy {oscillation:.2} J, max |E − E0| over 10 s at h = 2 ms: {worst:.3e} J ({rel:.2e} relative); bounce ≤ {max_tip:.4} m, swing ≤ {max_swing:.4} rad");
+    // The motion really is the disturbed one (no numerical damping of bounce or swing).
+    assert!(max_tip > 0.95 * released && released > 0.03 && max_swing > 0.049);
+    assert!(rel < 1e-4, "energy drift {rel:e}");
+}
+
+#[test]
+fn at_rest_both_rope_modes_give_the_same_piston_force_and_jack_reaction() {
+    let base = model();
+    for deg in [20.0, 40.0, 60.0, 80.0] {
+        let held = held_at(&base, deg);
+        for load in [0.0, 3300.0] {
+            let a = base.reactions_at_rest(f64::to_radians(deg), load).expect("thesis");
+            let b = held.reactions_at_rest(f64::to_radians(deg), load).expect("held");
+            let df = (a.piston_force_n - b.piston_force_n).abs() / a.piston_force_n.abs();
+            let dj = (a.jack_reaction_n - b.jack_reaction_n).abs() / a.jack_reaction_n.abs();
+            println!("{deg}° {load} kg: F {:.3} / {:.3} N, F_A {:.3} / {:.3} N", a.piston_force_n, b.piston_force_n, a.jack_reaction_n, b.jack_reaction_n);
+            assert!(df <= 1e-6 && dj <= 1e-6, "{deg}° {load} kg: rel gaps {df:e} {dj:e}");
+        }
+    }
+}
+
+#[test]
+fn held_rope_tension_in_the_start_ramp_is_the_load_riding_up_with_the_tip() {
+    let base = model();
+    let (load, deg0) = (3300.0, 40.0);
+    let mut m = Maneuver::thesis(load, 10.0, RampShape::Linear, crane_model::simulation::Direction::Up).expect("maneuver");
+    m.rope = RopeChoice::Held { length_m: None };
+    let program = m.program().expect("program");
+    let held = held_at(&base, deg0);
+    let sched = held.schedule(&program).expect("schedule");
+    let l = held.hanging_length_m(0.0).expect("length");
+    let m5 = load + base.rope_kg_per_m * l;
+    let g = base.gravity_m_s2;
+    let lc = base.modes.length_m;
+    let mut opts = SimulationOptions::for_type::<f64>();
+    opts.output_every = 1;
+    let (mut sum_t, mut sum_k, mut n, mut worst) = (0.0, 0.0, 0usize, 0.0f64);
+    let mut static_t = 0.0;
+    base.simulate(&m, &opts, |s| {
+        if s.t_s == 0.0 {
+            static_t = s.rope_tension_n;
+        }
+        // Inside the start ramp (0, t1 = 1 s), away from its edges.
+        if s.t_s > 0.1 && s.t_s < 0.95 {
+            let boom = held.geometry.motion(sched.actuator_at(s.t_s)).expect("motion").boom;
+            let (c, sn) = (boom.axis.x, boom.axis.y);
+            let y_acc = lc * (c * boom.angular_acceleration - sn * boom.angular_velocity * boom.angular_velocity);
+            let kin = m5 * (g + y_acc);
+            sum_t += s.rope_tension_n;
+            sum_k += kin;
+            n += 1;
+            worst = worst.max((s.rope_tension_n - kin).abs() / kin);
+        }
+        s.t_s < 1.0
+    })
+    .expect("simulation");
+    let (mean_t, mean_k) = (sum_t / n as f64, sum_k / n as f64);
+    let extra = mean_t / static_t - 1.0;
+    println!(
+        "start ramp: mean rope force {mean_t:.0} N vs W·(g + ÿ_tip) {mean_k:.0} N (gap {:+.2} %), static {static_t:.0} N, extra {:.1} %, worst instant gap {:.1} % (the bounce)",
+        100.0 * (mean_t / mean_k - 1.0),
+        100.0 * extra,
+        100.0 * worst
+    );
+    assert!((static_t / (m5 * g) - 1.0).abs() < 1e-3, "static rope force {static_t} vs {}", m5 * g);
+    assert!((mean_t / mean_k - 1.0).abs() < 0.05);
+    // The load really rides up: several percent of extra rope force.
+    assert!(extra > 0.05, "extra rope force {extra}");
+}
