@@ -322,7 +322,7 @@ fn still(model: &ThesisModel<f64>, deg: f64) -> ActuatorMotion<f64> {
 fn fe_tip_mass_bending_rad_s(crane: &CraneData, deg: f64, tip_mass_kg: f64) -> f64 {
     let an = ModalAnalysis::<f64>::new(crane, MeshRefinement::THESIS).expect("analysis");
     let n = an.mesh.n_dof();
-    let mut mass = an.mass.clone();
+    let mut mass = an.mass;
     let tip = an.mesh.n_nodes() - 1;
     let (u, w) = (DOF_PER_NODE * tip, DOF_PER_NODE * tip + 1);
     let th = deg.to_radians();
@@ -367,7 +367,7 @@ fn held_bounce_rad_s(model: &ThesisModel<f64>, deg: f64, load: f64) -> (f64, f64
         let col = -(forces(&qp) - forces(&qm)) / (2.0 * h);
         k.set_column(j, &col);
     }
-    let k = (&k + k.transpose()) * 0.5;
+    let k = (k + k.transpose()) * 0.5;
     let cfg = model.kinematics(act, load, &rest).expect("kinematics");
     let blk = model.reduced_equations(&cfg).mass;
     let mut m = M5::zeros();
@@ -380,9 +380,9 @@ fn held_bounce_rad_s(model: &ThesisModel<f64>, deg: f64, load: f64) -> (f64, f64
     }
     m[(4, 4)] = blk.c;
     let l = m.cholesky().expect("M positive definite").l();
-    let li = l.clone().try_inverse().expect("L invertible");
-    let c = &li * k * li.transpose();
-    let c = (&c + c.transpose()) * 0.5;
+    let li = l.try_inverse().expect("L invertible");
+    let c = li * k * li.transpose();
+    let c = (c + c.transpose()) * 0.5;
     let mut ev: Vec<f64> = c.symmetric_eigen().eigenvalues.iter().copied().collect();
     ev.sort_by(|a, b| a.total_cmp(b));
     (ev[0].sqrt(), ev[1].sqrt())
@@ -536,4 +536,42 @@ fn held_rope_tension_in_the_start_ramp_is_the_load_riding_up_with_the_tip() {
     assert!((mean_t / mean_k - 1.0).abs() < 0.05);
     // The load really rides up: several percent of extra rope force.
     assert!(extra > 0.05, "extra rope force {extra}");
+}
+
+#[test]
+fn lift_off_takes_the_load_up_and_the_crane_settles_at_its_static_state() {
+    let base = model();
+    let (deg, load) = (50.0, 3300.0);
+    for rope in [RopeChoice::Thesis, RopeChoice::Held { length_m: Some(8.0) }] {
+        let mut p = Program::new(deg, 0.0, rope).expect("program");
+        p.push(Segment::Hold { duration_s: 0.5 }).expect("hold");
+        p.push(Segment::LiftOff { duration_s: 2.0, load_kg: load }).expect("lift");
+        p.push(Segment::Hold { duration_s: 6.0 }).expect("hold");
+        let mut opts = SimulationOptions::for_type::<f64>();
+        opts.output_every = 5;
+        let mut rows = Vec::new();
+        base.simulate_program(&p, &opts, |s| {
+            rows.push((s.t_s, s.hook_load_kg, s.reactions.piston_force_n, s.rope_tension_n));
+            true
+        })
+        .expect("simulation");
+        let at = |t: f64| rows.iter().min_by(|a, b| (a.0 - t).abs().total_cmp(&(b.0 - t).abs())).copied().expect("row");
+        let model = match rope {
+            RopeChoice::Held { length_m: Some(l) } => base.with_rope(RopeMode::Held { length_m: l }),
+            _ => base,
+        };
+        let empty = model.reactions_at_rest(deg.to_radians(), 0.0).expect("rest").piston_force_n;
+        let full = model.reactions_at_rest(deg.to_radians(), load).expect("rest").piston_force_n;
+        // Before the lift the hook is empty; half-way it carries half; after, all.
+        assert!((at(0.4).2 / empty - 1.0).abs() < 1e-6);
+        assert!((at(1.5).1 - load / 2.0).abs() < 1e-6);
+        let end = at(8.5);
+        assert_eq!(end.1, load);
+        // The ramp's end leaves a bounce; its mean over the last 3 s is the static state.
+        let tail: Vec<f64> = rows.iter().filter(|r| r.0 >= 5.5).map(|r| r.2).collect();
+        let mean = tail.iter().sum::<f64>() / tail.len() as f64;
+        println!("{rope:?}: piston force empty {empty:.0} N, end {:.0} N, mean of the last 3 s {mean:.0} N (static {full:.0} N)", end.2);
+        assert!((mean / full - 1.0).abs() < 0.01, "{mean} vs {full}");
+        assert!(rows.iter().all(|r| r.1 >= 0.0 && r.1 <= load));
+    }
 }
