@@ -8,6 +8,7 @@ use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
 mod cmd;
+mod maneuver_file;
 mod model;
 mod plot;
 
@@ -26,7 +27,7 @@ struct Cli {
 enum Command {
     /// Boom mass, natural frequencies and kinds of the boom's modes.
     Modes(cmd::modes::ModesArgs),
-    /// Simulate one boom maneuver of the thesis (piston force, deflections, jack reaction).
+    /// Simulate one boom maneuver: a thesis case, any luffing move, a lift-off or a maneuver file.
     Simulate(cmd::simulate::SimulateArgs),
     /// Lifting capacity chart: tipping and rated load against radius.
     Chart(cmd::chart::ChartArgs),

@@ -435,6 +435,8 @@ pub struct Sample<T: Real> {
     pub rope_tension_n: T,
     /// Hook load hanging at this instant (kg; grows during a lift-off).
     pub hook_load_kg: T,
+    /// Piston speed da/dt (m/s), positive extending.
+    pub actuator_rate_m_s: T,
 }
 
 /// Totals of a run.
@@ -586,6 +588,7 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
             reactions: self.reactions(&lambda),
             rope_tension_n: self.rope_tension_n(&lambda, ev.config.swing_axis),
             hook_load_kg: ev.config.load_kg,
+            actuator_rate_m_s: ev.config.mech.actuator.rate_m_s,
             deflection_m,
             constraint_violation: sys.max_violation(),
             swing_rad: ev.config.swing_rad + T::frac_pi_2(),
