@@ -210,7 +210,7 @@ pub fn program(args: &ManeuverArgs) -> Result<(String, Program)> {
         bail!("--hold-before-s must be in [0, 3600] s");
     }
     if let Some(h) = args.hold_after_s {
-        if !(h >= 0.0 && h <= 3600.0) {
+        if !(0.0..=3600.0).contains(&h) {
             bail!("--hold-after-s must be in [0, 3600] s");
         }
     }
