@@ -39,6 +39,8 @@ enum Command {
     Replay(cmd::replay::ReplayArgs),
     /// Every figure as SVG plus an HTML page.
     Report(cmd::report::ReportArgs),
+    /// Validation campaign: seeded scenarios synthesized, replayed through the limiter and graded.
+    Campaign(cmd::campaign::CampaignArgs),
 }
 
 fn main() -> ExitCode {
@@ -51,6 +53,7 @@ fn main() -> ExitCode {
         Command::Calibrate(args) => cmd::calibrate::run(args),
         Command::Replay(args) => cmd::replay::run(args),
         Command::Report(args) => cmd::report::run(args),
+        Command::Campaign(args) => cmd::campaign::run(args),
     };
     match result {
         Ok(code) => ExitCode::from(code),

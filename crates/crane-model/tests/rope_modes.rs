@@ -575,3 +575,42 @@ fn lift_off_takes_the_load_up_and_the_crane_settles_at_its_static_state() {
         assert!(rows.iter().all(|r| r.1 >= 0.0 && r.1 <= load));
     }
 }
+
+#[test]
+fn piston_force_by_inverse_dynamics_along_the_actuator_equals_the_multiplier() {
+    let base = model();
+    let mut worst = 0.0f64;
+    for (rope, case) in [(RopeChoice::Thesis, 8usize), (RopeChoice::Held { length_m: None }, 8), (RopeChoice::Thesis, 3), (RopeChoice::Held { length_m: Some(5.0) }, 11)] {
+        let (_, mut m) = thesis_cases()[case];
+        m.rope = rope;
+        let program = m.program().expect("program");
+        let start = m.angles_deg().0.to_radians();
+        let model = base.with_rope(base.rope_for(rope, start).expect("rope"));
+        let sched = model.schedule(&program).expect("schedule");
+        let mut opts = SimulationOptions::for_type::<f64>();
+        opts.output_every = 7;
+        model
+            .simulate_program(&program, &opts, |s| {
+                // Re-evaluate this sample's state off the run: its free coordinates are not in
+                // the sample, so check at a state built from the sample's time and a swinging load.
+                let t = s.t_s;
+                let act = sched.actuator_at(t);
+                let mut free = model.equilibrium_state(s.boom_angle_rad, sched.load_at(t)).expect("eq");
+                free.swing_rad += 0.03 * (t * 1.3).sin();
+                free.swing_rate = 0.02 * (t * 0.7).cos();
+                for k in 0..4 {
+                    free.eta_rate[k] = 1e-3 * ((k + 1) as f64 * t).sin();
+                }
+                let ev = model.evaluate(act, sched.load_at(t), &free).expect("evaluate");
+                let (_, lambda) = model.multipliers(&ev).expect("multipliers");
+                let by_multiplier = model.reactions(&lambda).piston_force_n;
+                let by_power = model.piston_force_n(&ev).expect("power");
+                let rel = (by_power - by_multiplier).abs() / by_multiplier.abs();
+                worst = worst.max(rel);
+                assert!(rel < 1e-9, "t = {t}: {by_power} vs {by_multiplier}");
+                true
+            })
+            .expect("simulation");
+    }
+    println!("worst relative gap between the power balance and the multiplier: {worst:e}");
+}
