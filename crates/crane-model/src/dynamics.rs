@@ -152,7 +152,7 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
     /// F = −λ₁₄ = y_aᵀ·(M·ẏ − (Q + f + f_s + f_d)): one power balance over the five
     /// bodies, without the full mass matrix or the 14×14 solve of
     /// [`Self::multipliers`]. Equal to the multiplier to rounding (tested).
-    pub fn piston_force_n(&self, ev: &Evaluation<T, M>) -> Result<T, ModelError> {
+    pub fn piston_force_along_actuator_n(&self, ev: &Evaluation<T, M>) -> Result<T, ModelError> {
         let cfg = &ev.config;
         let mech = &cfg.mech;
         let act = mech.actuator;

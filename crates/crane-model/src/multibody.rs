@@ -592,6 +592,12 @@ pub struct Block2<T: Real, const M: usize> {
 impl<T: Real, const M: usize> Block2<T, M> {
     /// Solves [[A, b], [bᵀ, c]]·[x; y] = [f; g].
     pub fn solve(&self, f: &SVector<T, M>, g: T) -> Result<(SVector<T, M>, T), ModelError> {
+        self.factor()?.solve(f, g)
+    }
+
+    /// The factorization (Schur complement on the swing, then Cholesky), for
+    /// solving several right sides with one matrix (the Newton iteration).
+    pub fn factor(&self) -> Result<Block2Factor<T, M>, ModelError> {
         if !(self.c > T::zero()) {
             return Err(ModelError::Singular("swing inertia"));
         }
@@ -599,7 +605,22 @@ impl<T: Real, const M: usize> Block2<T, M> {
         let chol = schur
             .cholesky()
             .ok_or(ModelError::Singular("reduced mass matrix"))?;
-        let x = chol.solve(&(f - self.b * (g / self.c)));
+        Ok(Block2Factor { chol, b: self.b, c: self.c })
+    }
+}
+
+/// A factored [`Block2`].
+#[derive(Debug, Clone, Copy)]
+pub struct Block2Factor<T: Real, const M: usize> {
+    chol: nalgebra::linalg::Cholesky<T, nalgebra::Const<M>>,
+    b: SVector<T, M>,
+    c: T,
+}
+
+impl<T: Real, const M: usize> Block2Factor<T, M> {
+    /// Solves [[A, b], [bᵀ, c]]·[x; y] = [f; g].
+    pub fn solve(&self, f: &SVector<T, M>, g: T) -> Result<(SVector<T, M>, T), ModelError> {
+        let x = self.chol.solve(&(f - self.b * (g / self.c)));
         let y = (g - self.b.dot(&x)) / self.c;
         if !(x.iter().all(|v| v.is_finite()) && y.is_finite()) {
             return Err(ModelError::NotFinite("reduced accelerations"));

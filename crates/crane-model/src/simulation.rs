@@ -398,6 +398,21 @@ pub struct SimulationOptions {
     pub tolerance: f64,
     /// How the simulation starts.
     pub initial: InitialState,
+    /// What each sample computes.
+    pub outputs: Outputs,
+}
+
+/// What a [`Sample`] carries.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Outputs {
+    /// Every multiplier (14×14 solve over the full system): piston force, pin
+    /// forces, F_A, rope tension, constraint violation. The default.
+    All,
+    /// The piston force alone, by inverse dynamics along the actuator
+    /// ([`CraneModel::piston_force_along_actuator_n`], equal to the multiplier to rounding), for
+    /// log synthesis; pin forces, F_A, the stabilizing moment and the rope tension
+    /// are NaN, and the constraint violation is not evaluated (reported as 0).
+    PistonForce,
 }
 
 impl SimulationOptions {
@@ -409,6 +424,7 @@ impl SimulationOptions {
             output_every: 5,
             tolerance: if f32_like { 1e-5 } else { 1e-10 },
             initial: InitialState::Equilibrium,
+            outputs: Outputs::All,
         }
     }
 }
@@ -538,7 +554,7 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
             evaluations: 1,
             max_constraint_violation: T::zero(),
         };
-        let first = model.sample(&ev, T::zero(), 0)?;
+        let first = model.sample_with(&ev, T::zero(), 0, options.outputs)?;
         summary.max_constraint_violation = first.constraint_violation;
         if !on_sample(&first) {
             return Ok(summary);
@@ -557,7 +573,7 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
             if i % options.output_every == 0 || i == steps {
                 let ev = model.evaluate(act, load, &state.free)?;
                 summary.evaluations += 1;
-                let s = model.sample(&ev, t, stats.iterations)?;
+                let s = model.sample_with(&ev, t, stats.iterations, options.outputs)?;
                 summary.max_constraint_violation =
                     summary.max_constraint_violation.max(s.constraint_violation);
                 if !on_sample(&s) {
@@ -575,6 +591,44 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         t_s: T,
         iterations: usize,
     ) -> Result<Sample<T>, ModelError> {
+        self.sample_with(ev, t_s, iterations, Outputs::All)
+    }
+
+    /// The outputs at an evaluated state, all or the piston force alone.
+    pub fn sample_with(
+        &self,
+        ev: &crate::dynamics::Evaluation<T, M>,
+        t_s: T,
+        iterations: usize,
+        outputs: Outputs,
+    ) -> Result<Sample<T>, ModelError> {
+        let mut deflection_m = [T::zero(); 3];
+        for (s, d) in deflection_m.iter_mut().enumerate() {
+            for k in 0..M {
+                *d += self.modes.deflection_modes[s][k] * ev.config.eta[k];
+            }
+        }
+        if outputs == Outputs::PistonForce {
+            let nan = T::lit(f64::NAN);
+            return Ok(Sample {
+                t_s,
+                boom_angle_rad: ev.config.mech.boom.angle,
+                reactions: Reactions {
+                    piston_force_n: self.piston_force_along_actuator_n(ev)?,
+                    boom_foot_n: nalgebra::Vector2::new(nan, nan),
+                    cylinder_foot_n: nalgebra::Vector2::new(nan, nan),
+                    jack_reaction_n: nan,
+                    stabilizing_moment_nm: nan,
+                },
+                deflection_m,
+                constraint_violation: T::zero(),
+                swing_rad: ev.config.swing_rad + T::frac_pi_2(),
+                iterations,
+                rope_tension_n: nan,
+                hook_load_kg: ev.config.load_kg,
+                actuator_rate_m_s: ev.config.mech.actuator.rate_m_s,
+            });
+        }
         let (sys, lambda) = self.multipliers(ev)?;
         let mut deflection_m = [T::zero(); 3];
         for (s, d) in deflection_m.iter_mut().enumerate() {
