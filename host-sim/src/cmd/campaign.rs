@@ -17,7 +17,7 @@
 //! factor 1.5 and the 10 t chart cap.
 //!
 //! Grades (per scenario; u the true utilization at the instant):
-//! - **missed**: u reaches 1.05 and no OVERLOAD by then;
+//! - **missed**: u reaches 1.05 and no OVERLOAD (nor FAULT, which cuts too) by then;
 //! - **late**: the first OVERLOAD more than 0.2 s after u reached 1.0 (not missed);
 //! - **early**: an OVERLOAD onset while 0.85 < u < 1/1.1;
 //! - **false**: an OVERLOAD onset while u ≤ 0.85;
@@ -59,6 +59,10 @@ pub struct CampaignArgs {
     /// Number of simulated cranes (each with its friction and sensors, calibrated once).
     #[arg(long, default_value_t = 16)]
     pub cranes: usize,
+    /// Integration step (ms); 2 is the production step, 5 runs 2.5× faster with the
+    /// piston force within 0.75 % of it at the kinks of linear ramps.
+    #[arg(long, default_value_t = 2.0)]
+    pub step_ms: f64,
 }
 
 /// Log rate of the campaign's logs (the limiter's cycle).
@@ -400,13 +404,18 @@ mod limiter_adapter {
         learner.finish(50).map_err(|e| anyhow::anyhow!("calibration: {e:?}"))
     }
 
-    /// Replays `rows` through the limiter with `cal` (as `crane-sim replay`), one output per row.
-    pub fn replay(cal: &CraneCalibration, rows: &[SynthRow], out: &mut Vec<Output>) -> anyhow::Result<()> {
+    /// Replays `rows` through the limiter with `cal` (as `crane-sim replay`), one
+    /// output per row; returns the first fault's description, if any.
+    pub fn replay(cal: &CraneCalibration, rows: &[SynthRow], out: &mut Vec<Output>) -> anyhow::Result<Option<String>> {
         let config = LimiterConfig { calibration: *cal, ..LimiterConfig::standard() };
         let mut lim = Limiter::new(thesis_load_model_f32(), config).map_err(|e| anyhow::anyhow!("{e}"))?;
         out.clear();
+        let mut first_fault = None;
         out.extend(rows.iter().map(|r| {
             let rep = lim.step_frame(&frame(r));
+            if let (None, Some(f)) = (&first_fault, rep.fault) {
+                first_fault = Some(format!("{f} at {:.2} s", r.t_s));
+            }
             let state = match rep.state {
                 LimiterState::Normal => State::Normal,
                 LimiterState::Warning => State::Warning,
@@ -415,7 +424,7 @@ mod limiter_adapter {
             };
             Output { state, load_kg: rep.estimate.map_or(f32::NAN, |e| e.load_kg) }
         }));
-        Ok(())
+        Ok(first_fault)
     }
 }
 
@@ -442,6 +451,10 @@ struct Grade {
     warning_onsets: u32,
     warnings_below_0_8: u32,
     fault: bool,
+    /// The first fault the limiter reported.
+    first_fault: Option<String>,
+    /// The true u reached 1.05 during the lift-off.
+    missed_in_lift_off: bool,
     #[serde(skip)]
     band_motion: Vec<f32>,
     #[serde(skip)]
@@ -469,8 +482,10 @@ fn grade(sc: &Scenario, rows: &[SynthRow], out: &[limiter_adapter::Output], rate
         }
         if u >= 1.05 && g.t_true_1_05_s.is_none() {
             g.t_true_1_05_s = Some(r.t_s);
-            if g.first_overload_s.is_none() {
+            // A FAULT cuts the motion as an OVERLOAD does (fail-safe): not a miss.
+            if g.first_overload_s.is_none() && !g.fault {
                 g.missed = true;
+                g.missed_in_lift_off = sc.lift_off_s.is_some_and(|l| r.t_s <= l);
             }
         }
         if o.state != prev {
@@ -548,6 +563,8 @@ struct Summary {
     cranes: usize,
     overload_scenarios: usize,
     missed_overloads: usize,
+    /// Of the missed overloads, those where u reached 1.05 while the hoist took the load up.
+    missed_in_lift_off: usize,
     late_overloads: usize,
     early_overloads: usize,
     false_overloads: usize,
@@ -597,10 +614,14 @@ fn run_campaign(args: &CampaignArgs, progress: bool) -> Result<(Summary, Vec<Str
     let (k, n) = parse_shard(args.shard.as_deref())?;
     let model = thesis_model()?;
     let rated = RatedTable::new(&model)?;
-    let (mut options, dt) = synth_core::options_for_rate(RATE_HZ);
+    if !(args.step_ms >= 0.5 && args.step_ms <= 10.0 && (10.0 / args.step_ms - (10.0 / args.step_ms).round()).abs() < 1e-9) {
+        bail!("--step-ms must divide the 10 ms log period and lie in [0.5, 10]");
+    }
+    let mut options = SimulationOptions { step_s: args.step_ms * 1e-3, ..SimulationOptions::for_type::<f64>() };
+    options.output_every = (10.0 / args.step_ms).round() as usize;
+    let dt = options.output_every as f64 * options.step_s;
     // Synthesis needs the piston force only (inverse dynamics along the actuator).
     options.outputs = Outputs::PistonForce;
-    if let Ok(t) = std::env::var("CAMPAIGN_TOL") { options.tolerance = t.parse().unwrap_or(options.tolerance); }
     let indices: Vec<usize> = (0..args.scenarios).filter(|i| i % n == k - 1).collect();
     let cranes: Vec<Crane> = (0..args.cranes.min(args.scenarios)).map(|i| Crane::new(args.seed, i)).collect();
     let calibrations: Vec<CraneCalibration> = cranes.par_iter().map(|c| calibrate_crane(&model, c, &options, dt)).collect::<Result<_>>()?;
@@ -624,9 +645,10 @@ fn run_campaign(args: &CampaignArgs, progress: bool) -> Result<(Summary, Vec<Str
             let sensors = SensorModel { seed: sc.noise_seed, ..crane.sensors };
             let rows = synth_core::synthesize(&samples, dt, 0.0, sc.load_kg, &sensors);
             let t2 = std::time::Instant::now();
-            limiter_adapter::replay(&calibrations[sc.crane], &rows, out)?;
+            let fault = limiter_adapter::replay(&calibrations[sc.crane], &rows, out)?;
             let t3 = std::time::Instant::now();
-            let g = grade(&sc, &rows, out, &rated);
+            let mut g = grade(&sc, &rows, out, &rated);
+            g.first_fault = fault;
             let t4 = std::time::Instant::now();
             for (slot, d) in phase_ns.iter().zip([t1 - t0, t2 - t1, t3 - t2, t4 - t3]) {
                 slot.fetch_add(d.as_nanos() as u64, std::sync::atomic::Ordering::Relaxed);
@@ -649,6 +671,7 @@ fn run_campaign(args: &CampaignArgs, progress: bool) -> Result<(Summary, Vec<Str
         cranes: cranes.len(),
         overload_scenarios: 0,
         missed_overloads: 0,
+        missed_in_lift_off: 0,
         late_overloads: 0,
         early_overloads: 0,
         false_overloads: 0,
@@ -672,6 +695,7 @@ fn run_campaign(args: &CampaignArgs, progress: bool) -> Result<(Summary, Vec<Str
         };
         s.overload_scenarios += usize::from(g.t_true_overload_s.is_some());
         s.missed_overloads += usize::from(g.missed);
+        s.missed_in_lift_off += usize::from(g.missed_in_lift_off);
         s.late_overloads += usize::from(g.late);
         s.early_overloads += usize::from(g.early);
         s.false_overloads += usize::from(g.false_overload);
@@ -712,7 +736,7 @@ pub fn run(args: CampaignArgs) -> Result<u8> {
         let p = |v: [f64; 3]| format!("{:.3} / {:.3} / {:.3}", v[0], v[1], v[2]);
         let _ = writeln!(out, "campaign          seed {}, shard {}, {} scenarios on {} cranes", summary.seed, summary.shard, summary.scenarios, summary.cranes);
         let _ = writeln!(out, "overloads         {} scenarios reach true u ≥ 1.0", summary.overload_scenarios);
-        let _ = writeln!(out, "missed            {} (true u reached 1.05 with no OVERLOAD)", summary.missed_overloads);
+        let _ = writeln!(out, "missed            {} (true u reached 1.05 with no OVERLOAD; {} of them in a lift-off)", summary.missed_overloads, summary.missed_in_lift_off);
         let _ = writeln!(out, "late              {} (OVERLOAD > 0.2 s after true u = 1.0)", summary.late_overloads);
         let _ = writeln!(out, "early             {} (OVERLOAD while 0.85 < true u < 1/1.1)", summary.early_overloads);
         let _ = writeln!(out, "false             {} (OVERLOAD while true u ≤ 0.85)", summary.false_overloads);
