@@ -469,6 +469,7 @@ fn grade(sc: &Scenario, rows: &[SynthRow], out: &[limiter_adapter::Output], rate
     let rest_after = t_luff + sc.duration_s + 1.5;
     let rest_before = (sc.lift_off_s.map_or(1.0, |l| l + 1.0), t_luff);
     let mut prev = State::Normal;
+    let mut prev_load = rows.first().map_or(0.0, |r| r.true_load_kg);
     for (k, (r, o)) in rows.iter().zip(out).enumerate() {
         let rated_now = rated.at_deg(r.truth.boom_angle_rad.to_degrees());
         let u = r.true_load_kg / rated_now;
@@ -485,7 +486,8 @@ fn grade(sc: &Scenario, rows: &[SynthRow], out: &[limiter_adapter::Output], rate
             // A FAULT cuts the motion as an OVERLOAD does (fail-safe): not a miss.
             if g.first_overload_s.is_none() && !g.fault {
                 g.missed = true;
-                g.missed_in_lift_off = sc.lift_off_s.is_some_and(|l| r.t_s <= l);
+                // The crossing came with the hook load growing: the hoist was taking it up.
+                g.missed_in_lift_off = r.true_load_kg > prev_load;
             }
         }
         if o.state != prev {
@@ -512,6 +514,7 @@ fn grade(sc: &Scenario, rows: &[SynthRow], out: &[limiter_adapter::Output], rate
             }
             prev = o.state;
         }
+        prev_load = r.true_load_kg;
         if k % 5 == 0 && r.true_load_kg >= 1000.0 && o.load_kg.is_finite() {
             let ratio = (f64::from(o.load_kg) / r.true_load_kg) as f32;
             let t = r.t_s;
