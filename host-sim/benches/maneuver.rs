@@ -1,13 +1,16 @@
 //! The thesis's reference maneuver at its resolution (12 elements, 4 modes):
 //! 3300 kg, 30 s, cycloidal, boom up, with a sample (multipliers, reactions,
 //! deflections) every 10 ms. Target: median ≤ 20 ms (1500× faster than real time).
+//! Also with the held rope, and with the piston force alone (`Outputs::PistonForce`,
+//! what log synthesis and the campaign use).
 // criterion_group! generates an undocumented function.
 #![allow(missing_docs)]
 use criterion::{criterion_group, criterion_main, Criterion};
 use crane_model::modal::{MeshRefinement, THESIS_BASIS};
 use crane_model::multibody::ThesisModel;
 use crane_model::profile::RampShape;
-use crane_model::simulation::{Direction, Maneuver, SimulationOptions};
+use crane_model::rope::RopeChoice;
+use crane_model::simulation::{Direction, Maneuver, Outputs, SimulationOptions};
 use crane_model::CraneData;
 use std::hint::black_box;
 
@@ -26,6 +29,17 @@ fn maneuver(c: &mut Criterion) {
                 .expect("simulation");
             black_box((peak, summary))
         })
+    });
+    let held = Maneuver { rope: RopeChoice::Held { length_m: None }, ..m };
+    c.bench_function("thesis_30s_3300kg_cycloidal_up_held_rope", |b| {
+        b.iter(|| black_box(model.simulate(black_box(&held), &options, |_| true).expect("simulation")))
+    });
+    let light = SimulationOptions { outputs: Outputs::PistonForce, ..options };
+    c.bench_function("thesis_30s_3300kg_cycloidal_up_piston_force_only", |b| {
+        b.iter(|| black_box(model.simulate(black_box(&m), &light, |_| true).expect("simulation")))
+    });
+    c.bench_function("thesis_30s_3300kg_cycloidal_up_held_rope_piston_force_only", |b| {
+        b.iter(|| black_box(model.simulate(black_box(&held), &light, |_| true).expect("simulation")))
     });
     let m32 = ThesisModel::<f32>::build(&CraneData::coles_mobile_930(), MeshRefinement::THESIS, &THESIS_BASIS).expect("model");
     let options32 = SimulationOptions::for_type::<f32>();

@@ -9,6 +9,7 @@ use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
 mod cmd;
+mod maneuver_file;
 mod model;
 mod plot;
 mod progress;
@@ -38,7 +39,7 @@ struct Cli {
 enum Command {
     /// Boom mass, natural frequencies and kinds of the boom's modes.
     Modes(cmd::modes::ModesArgs),
-    /// Simulate one boom maneuver of the thesis (piston force, deflections, jack reaction).
+    /// Simulate one boom maneuver: a thesis case, any luffing move, a lift-off or a maneuver file.
     Simulate(cmd::simulate::SimulateArgs),
     /// Lifting capacity chart: tipping and rated load against radius.
     Chart(cmd::chart::ChartArgs),
@@ -57,6 +58,8 @@ at least once; 1 the log or the calibration could not be read, or the command li
     /// Every figure as SVG and PNG plus an HTML page (thesis maneuvers, chart, limiter on the example logs).
     #[command(after_help = "What each file shows: docs/reports.md.")]
     Report(cmd::report::ReportArgs),
+    /// Validation campaign: seeded scenarios synthesized, replayed through the limiter and graded.
+    Campaign(cmd::campaign::CampaignArgs),
 }
 
 fn main() -> ExitCode {
@@ -77,6 +80,7 @@ fn main() -> ExitCode {
         Command::Calibrate(args) => cmd::calibrate::run(args),
         Command::Replay(args) => cmd::replay::run(args),
         Command::Report(args) => cmd::report::run(args),
+        Command::Campaign(args) => cmd::campaign::run(args),
     };
     match result {
         Ok(code) => ExitCode::from(code),

@@ -79,6 +79,19 @@ impl<T: Real, const M: usize> State<T, M> {
         act_end: ActuatorMotion<T>,
         tolerance: T,
     ) -> Result<StepStats, ModelError> {
+        self.step_with_load(model, h, act_end, self.load_kg, tolerance)
+    }
+
+    /// [`Self::step`] with the hook load `load_end` at the end of the step (a
+    /// lift-off): the equations at the new state carry the new load.
+    pub fn step_with_load(
+        &mut self,
+        model: &CraneModel<T, M>,
+        h: T,
+        act_end: ActuatorMotion<T>,
+        load_end: T,
+        tolerance: T,
+    ) -> Result<StepStats, ModelError> {
         let half = T::lit(0.5);
         let quarter_h2 = h * h * T::lit(0.25);
         let t1 = self.t_s + h;
@@ -97,27 +110,34 @@ impl<T: Real, const M: usize> State<T, M> {
             f.swing_rate = z0.swing_rate + (a0_sw + a_sw) * (h * half);
             f
         };
-        let rigid = model.rigid_motion(act_end, self.load_kg)?;
+        let rigid = model.rigid_motion(act_end, load_end)?;
         let mut jacobian = None;
         for iteration in 1..=MAX_ITERATIONS {
             let free = predict(&a_eta, a_sw);
-            let ev = model.evaluate_at(&rigid, &free)?;
-            let eq = &ev.equations;
+            // The equations at the trial state; their own solve is not needed here.
+            let cfg = model.configure(&rigid, &free);
+            let eq = model.reduced_equations(&cfg);
             // Residual of the equations at the trial accelerations.
             let r_eta = eq.mass.a * a_eta + eq.mass.b * a_sw - eq.force_eta;
             let r_sw = eq.mass.b.dot(&a_eta) + eq.mass.c * a_sw - eq.force_swing;
-            let jac = *jacobian.get_or_insert_with(|| {
-                let mut j = eq.mass;
-                for k in 0..M {
-                    let w = model.modes.omega_rad_s[k];
-                    j.a[(k, k)] += model.modes.damping[k] * h * half + w * w * quarter_h2;
+            let jac = match jacobian {
+                Some(j) => j,
+                None => {
+                    let mut j = eq.mass;
+                    for k in 0..M {
+                        let w = model.modes.omega_rad_s[k];
+                        j.a[(k, k)] += model.modes.damping[k] * h * half + w * w * quarter_h2;
+                    }
+                    // The pendulum's gravity stiffness −∂f/∂θ5 = −Σ·g·sin θ5 (≥ 0 near hanging).
+                    let p = &cfg.pendulum;
+                    let k_swing = -p.first_moment_kg_m * model.gravity_m_s2 * free.swing_rad.sin();
+                    j.c += k_swing.max(T::zero()) * quarter_h2;
+                    // Factored once per step, reused by every iteration.
+                    let f = j.factor()?;
+                    jacobian = Some(f);
+                    f
                 }
-                // The pendulum's gravity stiffness −∂f/∂θ5 = −Σ·g·sin θ5 (≥ 0 near hanging).
-                let p = &ev.config.pendulum;
-                let k_swing = -p.first_moment_kg_m * model.gravity_m_s2 * free.swing_rad.sin();
-                j.c += k_swing.max(T::zero()) * quarter_h2;
-                j
-            });
+            };
             let (d_eta, d_sw) = jac.solve(&r_eta, r_sw)?;
             a_eta -= d_eta;
             a_sw -= d_sw;
@@ -136,7 +156,7 @@ impl<T: Real, const M: usize> State<T, M> {
                     free,
                     eta_accel: a_eta,
                     swing_accel: a_sw,
-                    load_kg: self.load_kg,
+                    load_kg: load_end,
                 };
                 return Ok(StepStats {
                     iterations: iteration,

@@ -11,6 +11,8 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 // Matrix loops index several arrays with one index, as the equations they implement do.
 #![allow(clippy::needless_range_loop)]
+// Range checks are written out so NaN fails them too, as `!(x > 0)` does.
+#![allow(clippy::manual_range_contains)]
 
 pub mod bodies;
 pub mod crane;
@@ -26,6 +28,7 @@ pub mod modal;
 pub mod multibody;
 pub mod profile;
 pub mod real;
+pub mod rope;
 pub mod section;
 pub mod simulation;
 pub mod statics;

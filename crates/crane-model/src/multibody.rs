@@ -18,6 +18,7 @@ use crate::dense::Square;
 use crate::mechanism::{unit, MechanismGeometry, MechanismMotion};
 use crate::modal::{BoomModes, MeshRefinement, ModalAnalysis};
 use crate::profile::ActuatorMotion;
+use crate::rope::{RopeChoice, RopeMode};
 use crate::{ModelError, Real};
 use nalgebra::{Matrix2, SMatrix, SVector, Vector2};
 
@@ -47,6 +48,8 @@ pub struct CraneModel<T: Real, const M: usize> {
     pub load_clearance_m: T,
     /// Gravitational acceleration (m/s²).
     pub gravity_m_s2: T,
+    /// How the rope's hanging length behaves (SPEC §3, the rope two ways).
+    pub rope: RopeMode<T>,
 }
 
 /// The thesis's model: 12 elements, the 4-mode basis, in f64 or f32.
@@ -67,6 +70,48 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
             rope_kg_per_m: T::lit(crane.rope.mass_per_m_kg),
             load_clearance_m: T::lit(crane.rope.load_clearance_m),
             gravity_m_s2: T::lit(crane.gravity_m_s2),
+            rope: RopeMode::Thesis,
+        }
+    }
+
+    /// This model with the rope in `mode` (everything else shared).
+    pub fn with_rope(&self, mode: RopeMode<T>) -> Self {
+        CraneModel { rope: mode, ..*self }
+    }
+
+    /// The rope mode of `choice` for a run starting at boom angle `start_rad`:
+    /// a held rope without a length gets the one that puts the load at the
+    /// clearance above the ground at the start.
+    pub fn rope_for(&self, choice: RopeChoice, start_rad: T) -> Result<RopeMode<T>, ModelError> {
+        match choice {
+            RopeChoice::Thesis => Ok(RopeMode::Thesis),
+            RopeChoice::Held { length_m: Some(l) } => {
+                if !(l > 0.0 && l.is_finite()) {
+                    return Err(ModelError::InvalidParameter("held rope length must be a finite number > 0 m"));
+                }
+                Ok(RopeMode::Held { length_m: T::lit(l) })
+            }
+            RopeChoice::Held { length_m: None } => {
+                Ok(RopeMode::Held { length_m: self.clearance_length_m(start_rad)? })
+            }
+        }
+    }
+
+    /// The hanging length that puts the load at the clearance above the ground with
+    /// the rigid boom at `angle_rad` (thesis assumption vi): y_C − clearance.
+    pub fn clearance_length_m(&self, angle_rad: T) -> Result<T, ModelError> {
+        let l = self.geometry.boom_foot.y + self.modes.length_m * angle_rad.sin() - self.load_clearance_m;
+        if !(l > T::zero()) {
+            return Err(ModelError::OutOfReach);
+        }
+        Ok(l)
+    }
+
+    /// The hanging length at rest at `angle_rad` in this model's rope mode.
+    pub fn hanging_length_m(&self, angle_rad: T) -> Result<T, ModelError> {
+        match self.rope {
+            RopeMode::Thesis => self.clearance_length_m(angle_rad),
+            RopeMode::Held { length_m } => Ok(length_m),
         }
     }
 
@@ -81,13 +126,18 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         Ok(Self::new(crane, modes.cast::<T>()))
     }
 
-    /// The rigid-body tip height of the boom at angle θ1, and the rope length that
-    /// keeps the load at its clearance, with its time derivatives.
+    /// Body 5 at this instant: in [`RopeMode::Thesis`] the rope length that keeps the
+    /// load at its clearance below the rigid tip, with its time derivatives; in
+    /// [`RopeMode::Held`] the constant length.
     fn pendulum(
         &self,
         boom: &crate::mechanism::BodyMotion<T>,
         load_kg: T,
     ) -> Result<Pendulum<T>, ModelError> {
+        if let RopeMode::Held { length_m } = self.rope {
+            // Winch braked: constant length, L̇ = L̈ = 0.
+            return Pendulum::new(self.rope_kg_per_m, load_kg, length_m, T::zero(), T::zero());
+        }
         let (c, s) = (boom.axis.x, boom.axis.y);
         let (w, al) = (boom.angular_velocity, boom.angular_acceleration);
         let lc = self.modes.length_m;
@@ -542,6 +592,12 @@ pub struct Block2<T: Real, const M: usize> {
 impl<T: Real, const M: usize> Block2<T, M> {
     /// Solves [[A, b], [bᵀ, c]]·[x; y] = [f; g].
     pub fn solve(&self, f: &SVector<T, M>, g: T) -> Result<(SVector<T, M>, T), ModelError> {
+        self.factor()?.solve(f, g)
+    }
+
+    /// The factorization (Schur complement on the swing, then Cholesky), for
+    /// solving several right sides with one matrix (the Newton iteration).
+    pub fn factor(&self) -> Result<Block2Factor<T, M>, ModelError> {
         if !(self.c > T::zero()) {
             return Err(ModelError::Singular("swing inertia"));
         }
@@ -549,7 +605,22 @@ impl<T: Real, const M: usize> Block2<T, M> {
         let chol = schur
             .cholesky()
             .ok_or(ModelError::Singular("reduced mass matrix"))?;
-        let x = chol.solve(&(f - self.b * (g / self.c)));
+        Ok(Block2Factor { chol, b: self.b, c: self.c })
+    }
+}
+
+/// A factored [`Block2`].
+#[derive(Debug, Clone, Copy)]
+pub struct Block2Factor<T: Real, const M: usize> {
+    chol: nalgebra::linalg::Cholesky<T, nalgebra::Const<M>>,
+    b: SVector<T, M>,
+    c: T,
+}
+
+impl<T: Real, const M: usize> Block2Factor<T, M> {
+    /// Solves [[A, b], [bᵀ, c]]·[x; y] = [f; g].
+    pub fn solve(&self, f: &SVector<T, M>, g: T) -> Result<(SVector<T, M>, T), ModelError> {
+        let x = self.chol.solve(&(f - self.b * (g / self.c)));
         let y = (g - self.b.dot(&x)) / self.c;
         if !(x.iter().all(|v| v.is_finite()) && y.is_finite()) {
             return Err(ModelError::NotFinite("reduced accelerations"));

@@ -29,11 +29,7 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
     }
 
     fn tip_weight_body(&self, boom_angle_rad: T, load_kg: T) -> Result<Vector2<T>, ModelError> {
-        let a0 = self.geometry.boom_foot;
-        let l = a0.y + self.modes.length_m * boom_angle_rad.sin() - self.load_clearance_m;
-        if !(l > T::zero()) {
-            return Err(ModelError::OutOfReach);
-        }
+        let l = self.hanging_length_m(boom_angle_rad)?;
         let w = (load_kg + self.rope_kg_per_m * l) * self.gravity_m_s2;
         Ok(rotation(boom_angle_rad).transpose() * Vector2::new(T::zero(), -w))
     }

@@ -1,0 +1,68 @@
+//! `crane-sim campaign` (issue 10, SPEC §5): reproducible from its seed, shards
+//! that make up the whole campaign, and a small campaign that must not miss an
+//! overload while luffing or at rest.
+//!
+//! Lift-offs are counted apart (`missed_in_lift_off`): with today's limiter an
+//! over-rated load hoisted off the ground in 2–6 s passes u = 1.0 → 1.05 in
+//! 0.1–0.3 s, faster than its 0.35–0.5 s detection; that is the limiter issue
+//! that builds on this one, so it is printed here, not asserted, as is the
+//! false-OVERLOAD count.
+use std::process::Command;
+
+fn campaign(args: &[&str]) -> (String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_crane-sim")).arg("campaign").args(args).output().expect("runs");
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    (String::from_utf8(out.stdout).expect("utf8"), String::from_utf8_lossy(&out.stderr).into_owned())
+}
+
+fn scenario_lines(json: &str) -> Vec<String> {
+    json.lines().filter(|l| l.contains("\"type\":\"scenario\"")).map(str::to_owned).collect()
+}
+
+fn summary(json: &str) -> serde_json::Value {
+    let last = json.lines().last().expect("summary line");
+    let v: serde_json::Value = serde_json::from_str(last).expect("json");
+    assert_eq!(v["type"], "summary");
+    v
+}
+
+#[test]
+fn same_seed_same_json_and_shards_make_up_the_campaign() {
+    let args = ["--scenarios", "12", "--seed", "5", "--cranes", "3", "--json"];
+    let (a, _) = campaign(&args);
+    let (b, _) = campaign(&args);
+    assert_eq!(a, b, "same seed, same JSON");
+    let all = scenario_lines(&a);
+    assert_eq!(all.len(), 12);
+    let mut shards: Vec<String> = ["1/2", "2/2"].iter().flat_map(|s| scenario_lines(&campaign(&[&args[..], &["--shard", s]].concat()).0)).collect();
+    let key = |l: &String| serde_json::from_str::<serde_json::Value>(l).expect("json")["index"].as_u64().expect("index");
+    shards.sort_by_key(key);
+    assert_eq!(shards, all, "shards 1/2 and 2/2 are the campaign");
+    // Every scenario carries its seed and the synth command that re-makes it.
+    for l in &all {
+        let v: serde_json::Value = serde_json::from_str(l).expect("json");
+        assert!(v["seed"].as_u64().is_some());
+        assert!(v["synth"].as_str().expect("synth").starts_with("crane-sim synth --from-deg"));
+    }
+    let (c, _) = campaign(&["--scenarios", "12", "--seed", "6", "--cranes", "3", "--json"]);
+    assert_ne!(scenario_lines(&c), all, "another seed, other scenarios");
+}
+
+#[test]
+fn small_campaign_misses_no_overload_while_luffing_or_at_rest() {
+    let (json, err) = campaign(&["--scenarios", "200", "--seed", "1", "--json"]);
+    let s = summary(&json);
+    println!("{s}");
+    println!("{err}");
+    let n = |k: &str| s[k].as_u64().unwrap_or_else(|| panic!("{k}"));
+    assert_eq!(n("scenarios"), 200);
+    assert_eq!(n("failed_simulations"), 0);
+    assert!(n("overload_scenarios") >= 15, "the distribution must contain overloads");
+    println!(
+        "missed overloads {} ({} in lift-offs), false OVERLOADs {} (reported, not asserted)",
+        n("missed_overloads"),
+        n("missed_in_lift_off"),
+        n("false_overloads")
+    );
+    assert_eq!(n("missed_overloads") - n("missed_in_lift_off"), 0, "an overload while luffing or at rest was missed");
+}

@@ -1,0 +1,102 @@
+//! `crane-sim simulate` / `synth` maneuvers (issue 10, SPEC §5 added interfaces):
+//! the thesis flags and `--case` give the same numbers, the held rope changes the
+//! dynamics but not the statics, maneuver files run and bad ones are refused with
+//! the segment named, and synth's friction laws and pendulum lag reach the log.
+use std::path::Path;
+use std::process::Command;
+
+fn crane_sim(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_crane-sim")).args(args).output().expect("runs")
+}
+
+fn csv(path: &Path) -> Vec<Vec<f64>> {
+    std::fs::read_to_string(path)
+        .expect("csv")
+        .lines()
+        .filter(|l| !l.starts_with('#'))
+        .skip(1)
+        .map(|l| l.split(',').map(|v| v.parse().expect("number")).collect())
+        .collect()
+}
+
+#[test]
+fn thesis_flags_case_and_from_to_give_the_same_run_and_held_differs_only_in_motion() {
+    let dir = tempfile::tempdir().expect("tmp");
+    let p = |n: &str| dir.path().join(n).to_string_lossy().into_owned();
+    let runs: [(&str, Vec<&str>); 4] = [
+        ("case.csv", vec!["--case", "3300kg-10s-linear-up"]),
+        ("flags.csv", vec!["--load-kg", "3300", "--duration", "10", "--profile", "linear", "--direction", "up"]),
+        ("fromto.csv", vec!["--load-kg", "3300", "--from-deg", "40", "--to-deg", "80", "--duration", "10", "--ramp-s", "1", "--profile", "linear", "--hold-after-s", "0.3"]),
+        ("held.csv", vec!["--case", "3300kg-10s-linear-up", "--rope", "held"]),
+    ];
+    for (name, args) in &runs {
+        let out_path = p(name);
+        let mut a = vec!["simulate", "--out", &out_path];
+        a.extend(args.iter().copied());
+        let out = crane_sim(&a);
+        assert_eq!(out.status.code(), Some(0), "{name}: {}", String::from_utf8_lossy(&out.stderr));
+    }
+    let (case, flags, fromto, held) = (csv(Path::new(&p("case.csv"))), csv(Path::new(&p("flags.csv"))), csv(Path::new(&p("fromto.csv"))), csv(Path::new(&p("held.csv"))));
+    assert_eq!(case, flags);
+    assert_eq!(case, fromto);
+    assert_eq!(case.len(), held.len());
+    // At t = 0 (rest, same rope length) the piston force is the same; in the start ramp the
+    // held load rides up with the tip and the piston pushes harder.
+    assert!((case[0][2] - held[0][2]).abs() < 1e-6 * case[0][2]);
+    let peak = |rows: &[Vec<f64>]| rows.iter().filter(|r| r[0] <= 1.5).map(|r| r[2]).fold(f64::MIN, f64::max);
+    assert!(peak(&held) > peak(&case) + 5e3, "held {} thesis {}", peak(&held), peak(&case));
+    // The held rope's tension at rest is the load's weight (plus the rope's).
+    assert!((held[0][9] / (3300.0 * 9.81) - 1.0).abs() < 0.02, "tension {}", held[0][9]);
+}
+
+#[test]
+fn maneuver_files_run_and_bad_ones_name_the_segment() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/maneuvers");
+    let dir = tempfile::tempdir().expect("tmp");
+    for f in ["lift-and-luff.toml", "lift-and-luff.json"] {
+        let out_path = dir.path().join(format!("{f}.csv"));
+        let file = root.join(f);
+        let out = crane_sim(&["simulate", "--maneuver", file.to_str().expect("path"), "--out", out_path.to_str().expect("path")]);
+        assert_eq!(out.status.code(), Some(0), "{f}: {}", String::from_utf8_lossy(&out.stderr));
+        let rows = csv(&out_path);
+        // Starts empty, ends with 3.3 t hanging, at 45° (toml) or 70° (json).
+        assert_eq!(rows[0][10], 0.0);
+        let last = rows.last().expect("rows");
+        assert_eq!(last[10], 3300.0);
+        let end = if f.ends_with("toml") { 45.0 } else { 70.0 };
+        assert!((last[1] - end).abs() < 0.05, "{f}: ends at {}", last[1]);
+    }
+    let bad = dir.path().join("bad.toml");
+    std::fs::write(&bad, "start_deg = 35\n[[segment]]\nkind = \"hold\"\nduration_s = 1\n[[segment]]\nkind = \"luff\"\nto_deg = 99\nduration_s = 3\n").expect("write");
+    let out = crane_sim(&["simulate", "--maneuver", bad.to_str().expect("path")]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("segment 2") && err.contains("88"), "{err}");
+}
+
+#[test]
+fn synth_friction_law_and_first_order_pendulum_reach_the_log() {
+    let dir = tempfile::tempdir().expect("tmp");
+    let run = |name: &str, extra: &[&str]| -> Vec<Vec<f64>> {
+        let out_path = dir.path().join(name);
+        let mut a = vec!["synth", "--case", "3300kg-30s-cycloidal-up", "--rate-hz", "100", "--noise-bar", "0", "--noise-deg", "0", "--out", out_path.to_str().expect("path")];
+        a.extend_from_slice(extra);
+        let out = crane_sim(&a);
+        assert_eq!(out.status.code(), Some(0), "{name}: {}", String::from_utf8_lossy(&out.stderr));
+        csv(&out_path)
+    };
+    let constant = run("c.csv", &[]);
+    let seal = run("s.csv", &["--friction-law", "seal", "--friction-up-n", "4000", "--friction-up-b", "0.05"]);
+    let lag = run("l.csv", &["--pendulum", "first-order", "--pendulum-tau-s", "0.3"]);
+    // Mid-move (t = 16 s: 15 s into the move after the 1 s hold): seal friction 4 kN +
+    // 5 % of ~250 kN ≈ 16.5 kN against the constant 12 kN: p1 reads higher.
+    let at = |rows: &[Vec<f64>], t: f64| rows.iter().find(|r| (r[0] - t).abs() < 1e-6).expect("row").clone();
+    let (c, s) = (at(&constant, 16.0), at(&seal, 16.0));
+    let area_bar = std::f64::consts::PI * 0.115 * 0.115 * 1e5;
+    let extra_n = (s[1] - c[1]) * area_bar;
+    assert!(extra_n > 2_500.0 && extra_n < 7_000.0, "seal − constant = {extra_n} N");
+    // A 0.3 s lag reads the rising boom about ω·τ behind (≈ 1.4 °/s · 0.3 s), the 2 Hz
+    // ζ = 0.7 pendulum 2ζ/ωn ≈ 0.11 s behind.
+    let behind = at(&lag, 16.0)[3] - c[3];
+    assert!(behind < -0.15 && behind > -0.5, "first-order lag reads {behind}° against the default");
+}
