@@ -21,6 +21,7 @@ pub mod error;
 pub mod fe;
 pub mod integrator;
 pub mod load_model;
+pub mod load_table;
 pub mod mechanism;
 pub mod modal;
 pub mod multibody;
