@@ -391,6 +391,9 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     /// One hardware cycle: reads the counts, steps, drives the outputs. An
     /// output failure makes the next cycles FAULT (the outputs are wired so
     /// that a failed driver leaves the motions cut).
+    // A named function in every image: scripts/check-cycle-image.sh walks
+    // the call graph from it (no soft float, no panic in the cycle).
+    #[inline(never)]
     pub fn cycle<S: SensorInputs, O: Outputs>(
         &mut self,
         t_s: T,
@@ -409,6 +412,8 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     }
 
     /// One cycle from a recorded frame in physical units (the replay's entry).
+    // Named in every image, as `cycle` (scripts/check-cycle-image.sh).
+    #[inline(never)]
     pub fn step_frame(&mut self, frame: &Frame<T>) -> StepReport<T> {
         let fault = |channel: Channel| move |kind: FaultKind| SensorFault { channel, kind };
         let readings = PressureBar::new(frame.p1_bar)
