@@ -209,25 +209,32 @@ impl LoadTable {
         // belongs to the last interval.
         let i = (u as usize).min(KNOTS - 2);
         let t = u - i as f32;
-        let (Some(p1), Some(p2)) = (self.rows.get(i), self.rows.get(i + 1)) else {
-            return Err(ModelError::OutOfReach);
-        };
-        // Outer neighbours; at the ends of the table the one beyond is the
-        // quadratic through the three last knots continued (so the end
-        // slope is the second-order one-sided difference).
-        let p0 = i.checked_sub(1).and_then(|k| self.rows.get(k));
-        let p3 = self.rows.get(i + 2);
-        let (Some(q0), Some(q3)) = (p0.or(p3), p3.or(p0)) else {
-            return Err(ModelError::OutOfReach);
+        // Catmull–Rom as weights on the four knots around: the same four
+        // numbers for every column. At the ends of the table the knot beyond
+        // is the quadratic through the three end knots continued
+        // (y₋₁ = 3·(y₀ − y₁) + y₂), folded into the weights.
+        let (t2, t3) = (t * t, t * t * t);
+        let w = [
+            -0.5 * t + t2 - 0.5 * t3,
+            1.0 - 2.5 * t2 + 1.5 * t3,
+            0.5 * t + 2.0 * t2 - 1.5 * t3,
+            -0.5 * t2 + 0.5 * t3,
+        ];
+        let (knots, w) = if i == 0 {
+            ([i, i + 1, i + 2, i + 2], [w[1] + 3.0 * w[0], w[2] - 3.0 * w[0], w[3] + w[0], 0.0])
+        } else if i + 2 >= KNOTS {
+            ([i - 1, i, i + 1, i + 1], [w[0] + w[3], w[1] - 3.0 * w[3], w[2] + 3.0 * w[3], 0.0])
+        } else {
+            ([i - 1, i, i + 1, i + 2], w)
         };
         let mut row = [0.0f32; column::COUNT];
-        for (c, out) in row.iter_mut().enumerate() {
-            let (y1, y2) = (get(p1, c), get(p2, c));
-            let (z0, z3) = (get(q0, c), get(q3, c));
-            let y0 = if p0.is_some() { z0 } else { 3.0 * (y1 - y2) + z3 };
-            let y3 = if p3.is_some() { z3 } else { 3.0 * (y2 - y1) + z0 };
-            let (m1, m2, d) = (0.5 * (y2 - y0), 0.5 * (y3 - y1), y2 - y1);
-            *out = y1 + t * (m1 + t * ((3.0 * d - m1 - m1 - m2) + t * (m1 + m2 - d - d)));
+        for (k, wk) in knots.iter().zip(w) {
+            let Some(r) = self.rows.get(*k) else {
+                return Err(ModelError::OutOfReach);
+            };
+            for (out, y) in row.iter_mut().zip(r) {
+                *out += wk * y;
+            }
         }
         Ok(row)
     }
