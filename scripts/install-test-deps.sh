@@ -3,7 +3,8 @@
 #   - the Rust target thumbv7em-none-eabihf (Cortex-M4F, hard float);
 #   - qemu-system-arm (runs the firmware's QEMU build, machine netduinoplus2);
 #   - binutils-arm-none-eabi (arm-none-eabi-size/nm/objdump for the budgets);
-#   - python3 (scripts/check-cycle-image.py walks the image's call graph).
+#   - python3 (scripts/check-cycle-image.py walks the image's call graph);
+#   - flip-link (cargo install; the firmware's linker, stack-overflow guard).
 # Safe to run on every CI run and on a developer machine: each step is skipped
 # when its tool is already there. apt-get runs non-interactively and only when a
 # package is missing (with `apt-get update` first); it needs root or sudo.
@@ -18,6 +19,13 @@ if command -v rustup >/dev/null 2>&1; then
     fi
 else
     echo "install-test-deps: rustup not found; make sure the $TARGET target is installed" >&2
+fi
+
+# flip-link: the firmware's linker wrapper (stack-overflow guard, see
+# .cargo/config.toml); a cargo binary, about 30 s to build.
+if ! command -v flip-link >/dev/null 2>&1; then
+    echo "install-test-deps: cargo install flip-link"
+    cargo install --locked flip-link
 fi
 
 missing=()
