@@ -69,7 +69,7 @@ pub fn sin_cos_f32(x: f32) -> (f32, f32) {
     const FRAC_2_PI: f32 = core::f32::consts::FRAC_2_PI;
     // π/2 with its f32 mantissa cut to 12 bits (0x3fc90000), and the rest.
     const PIO2_HI: f32 = 1.570_312_5;
-    const PIO2_LO: f32 = 4.838_267_9e-4;
+    const PIO2_LO: f32 = 4.838_268e-4;
     let q = x * FRAC_2_PI;
     // Round to nearest: `as` truncates toward zero and saturates (NaN → 0).
     let k = if q >= 0.0 { (q + 0.5) as i32 } else { (q - 0.5) as i32 };
