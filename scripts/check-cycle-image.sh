@@ -17,3 +17,10 @@ cp "$ELF" "$ELF-board-check"
 python3 scripts/check-cycle-image.py "$ELF-board-check" 5cycle | sed -n '1p;$p'
 cargo build -q --release --target $TARGET -p firmware
 python3 scripts/check-cycle-image.py "$ELF" 10step_frame | sed -n '1p;$p'
+# Negative control: the log parser parses f64 (soft float on the M4F) and can
+# panic; if the walk from it came out clean, the checker would be blind.
+if python3 scripts/check-cycle-image.py "$ELF" 9feed_line >/dev/null 2>&1; then
+    echo "check-cycle-image: negative control failed: LogParser::feed_line passed the check" >&2
+    exit 1
+fi
+echo "negative control ok: LogParser::feed_line (f64 parsing) is rejected"
