@@ -2,7 +2,9 @@
 # Installs what the firmware tests need, only when it is missing (idempotent):
 #   - the Rust target thumbv7em-none-eabihf (Cortex-M4F, hard float);
 #   - qemu-system-arm (runs the firmware's QEMU build, machine netduinoplus2);
-#   - binutils-arm-none-eabi (arm-none-eabi-size/nm/objdump for the budgets).
+#   - binutils-arm-none-eabi (arm-none-eabi-size/nm/objdump for the budgets);
+#   - python3 (scripts/check-cycle-image.py walks the image's call graph);
+#   - flip-link (cargo install; the firmware's linker, stack-overflow guard).
 # Safe to run on every CI run and on a developer machine: each step is skipped
 # when its tool is already there. apt-get runs non-interactively and only when a
 # package is missing (with `apt-get update` first); it needs root or sudo.
@@ -19,9 +21,17 @@ else
     echo "install-test-deps: rustup not found; make sure the $TARGET target is installed" >&2
 fi
 
+# flip-link: the firmware's linker wrapper (stack-overflow guard, see
+# .cargo/config.toml); a cargo binary, about 30 s to build.
+if ! command -v flip-link >/dev/null 2>&1; then
+    echo "install-test-deps: cargo install flip-link"
+    cargo install --locked flip-link
+fi
+
 missing=()
 command -v qemu-system-arm >/dev/null 2>&1 || missing+=(qemu-system-arm)
 command -v arm-none-eabi-size >/dev/null 2>&1 || missing+=(binutils-arm-none-eabi)
+command -v python3 >/dev/null 2>&1 || missing+=(python3)
 
 if ((${#missing[@]})); then
     SUDO=""

@@ -17,5 +17,8 @@ echo "== firmware images (QEMU and board)"
 cargo build --release --target thumbv7em-none-eabihf -p firmware
 cargo build --release --target thumbv7em-none-eabihf -p firmware --no-default-features --features board
 
+echo "== the control cycle's machine code: no soft float, no f64, no panic"
+bash scripts/check-cycle-image.sh
+
 echo "== tests (host, release: the model runs optimised; includes QEMU vs host replay)"
 cargo test --release --workspace --exclude firmware

@@ -1,14 +1,17 @@
 //! **The** seam where the firmware obtains its crane model: [`hook_load_model`].
 //!
-//! The microcontroller never runs the finite-element assembly or the eigen-solve
-//! (41–60 KB of stack and 1.4 M instructions for the 35×35 problem, see
-//! EMBEDDED-NOTES.md): the reduced model's modal data (the time-invariant matrices
-//! of thesis eqs. 3.1–3.11) is computed on the host in f64 and compiled in as f32
-//! constants (`crane_model::thesis_modes::THESIS_MODES_F32`, checked against a
-//! fresh analysis by a test). Per cycle the MCU only assembles and solves the
-//! small equations of the flexible multibody model. `crane-sim replay` uses the
-//! very same constants and f32 arithmetic, so their timelines agree sample for
-//! sample.
+//! The microcontroller runs no multibody code at all. The limiter's terms
+//! depend on the boom angle alone once the hook load and the rate are factored
+//! out (the piston force and the rear-jack reaction are quadratics in the load,
+//! the rate enters as ω²), so the host tabulates them with the full f64 model
+//! every 0.5° and the image carries the table as f32 constants
+//! (`crane_model::load_table`, 184 rows × 13 columns, 9.4 KB; checked against
+//! the full model and against a fresh generation by tests). One control cycle
+//! asks the table once ([`crane_model::load_model::HookLoadModel::cycle_terms`]):
+//! two interpolations and one quadratic root, no trigonometry, no f64, no
+//! panic (scripts/check-cycle-image.sh proves the last three on the image).
+//! `crane-sim replay` runs the very same table in f32, so their timelines agree
+//! sample for sample.
 
 use crane_model::load_model::HookLoadModel;
 

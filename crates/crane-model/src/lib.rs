@@ -4,7 +4,12 @@
 //! Mobile 930 of S. Kılıçaslan's 1997 METU thesis), written for a load moment
 //! limiter: `no_std`, no heap, generic over `f32` (microcontroller) and `f64` (host).
 //!
-//! The work seam for the limiter is [`load_model::HookLoadModel`].
+//! The work seam for the limiter is [`load_model::HookLoadModel`]: one query per
+//! control cycle ([`load_model::HookLoadModel::cycle_terms`]). On the controller
+//! and in `crane-sim replay` it is answered by [`load_table::LoadTable`], the
+//! limiter's terms tabulated over the boom angle from the full f64 model (no
+//! multibody code in the cycle); on the host the full model
+//! ([`multibody::CraneModel`]) answers it too.
 #![cfg_attr(not(any(test, feature = "std")), no_std)]
 #![forbid(unsafe_code)]
 // `!(x > 0)` is deliberate throughout: unlike `x <= 0` it also rejects NaN.
@@ -23,6 +28,7 @@ pub mod error;
 pub mod fe;
 pub mod integrator;
 pub mod load_model;
+pub mod load_table;
 pub mod mechanism;
 pub mod modal;
 pub mod multibody;

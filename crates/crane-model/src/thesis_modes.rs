@@ -9,7 +9,6 @@
 use crate::crane::CraneData;
 use crate::modal::{BoomModes, MeshRefinement, ModalAnalysis, ModeKind, THESIS_BASIS};
 use crate::multibody::CraneModel;
-use crate::tipping::CachedLoadModel;
 use crate::ModelError;
 
 include!("thesis_modes_data.rs");
@@ -25,9 +24,11 @@ pub fn thesis_model_f32() -> CraneModel<f32, 4> {
     CraneModel::new(&CraneData::coles_mobile_930(), THESIS_MODES_F32)
 }
 
-/// The controller's model wrapped for the limiter (one-entry cache per boom state).
-pub fn thesis_load_model_f32() -> CachedLoadModel<f32, 4> {
-    CachedLoadModel::new(thesis_model_f32())
+/// The limiter's model on the controller and in `crane-sim replay`: the
+/// load table ([`crate::load_table`]), generated from the full f64 model and
+/// interpolated in f32; no multibody code runs in the cycle.
+pub fn thesis_load_model_f32() -> crate::load_table::LoadTable {
+    crate::load_table::thesis_load_table()
 }
 
 #[cfg(test)]

@@ -108,26 +108,9 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
     }
 }
 
-/// Smallest positive root of a + b·W + c·W² (numerically stable form).
+/// Smallest positive root of a + b·W + c·W² ([`Quadratic::smallest_positive_root`]).
 fn smallest_positive_root<T: Real>(a: T, b: T, c: T) -> Option<T> {
-    let tiny = T::default_epsilon() * (b.abs() + a.abs());
-    if c.abs() * T::lit(1e8) <= b.abs() || c.abs() <= tiny {
-        let r = -a / b;
-        return if r > T::zero() && r.is_finite() { Some(r) } else { None };
-    }
-    let disc = b * b - T::lit(4.0) * a * c;
-    if disc < T::zero() {
-        return None;
-    }
-    let q = -(b + b.signum() * disc.sqrt()) * T::lit(0.5);
-    let (r1, r2) = (q / c, a / q);
-    let mut best: Option<T> = None;
-    for r in [r1, r2] {
-        if r > T::zero() && r.is_finite() && best.is_none_or(|b| r < b) {
-            best = Some(r);
-        }
-    }
-    best
+    Quadratic { at_zero: a, per_kg: b, per_kg2: c }.smallest_positive_root()
 }
 
 /// Piston force and F_A at rest as exact quadratics in W, from three evaluations.
@@ -172,12 +155,9 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         let (fa, fb, fc) = quad(r0.jack_reaction_n, r1.jack_reaction_n, r2.jack_reaction_n);
         let (pa, pb, pc) = quad(r0.piston_force_n, r1.piston_force_n, r2.piston_force_n);
         let huge = T::max_value().unwrap_or_else(T::one);
-        let tipping = smallest_positive_root(fa, fb, fc).unwrap_or(huge);
-        let jack_reaction = if tipping < T::lit(1e9) {
-            Affine { at_zero: fa, per_kg: -fa / tipping }
-        } else {
-            Affine { at_zero: fa, per_kg: fb }
-        };
+        let jack = Quadratic { at_zero: fa, per_kg: fb, per_kg2: fc };
+        let tipping = jack.smallest_positive_root().unwrap_or(huge);
+        let jack_reaction = jack.tipping_secant();
         let piston_force = Quadratic { at_zero: pa, per_kg: pb, per_kg2: pc };
         Ok(LoadResponses { piston_force, jack_reaction, tipping_load_kg: tipping })
     }

@@ -11,7 +11,7 @@
 //! crane, SPEC §1), and the optional manufacturer chart interpolated on the
 //! hook radius.
 
-use crane_model::load_model::{BoomState, HookLoadModel};
+use crane_model::load_model::{BoomState, CapacityTerms, HookLoadModel};
 use crane_model::{ModelError, Real};
 
 /// Most points a manufacturer chart may have.
@@ -126,13 +126,25 @@ impl<T: Real> Capacity<T> {
             && self.max_rated_kg >= T::lit(0.0)
     }
 
-    /// The rating at a boom state.
+    /// The rating at a boom state, asking `model` (the charts and tools;
+    /// the control cycle has the terms already and calls
+    /// [`rating_from`](Self::rating_from)).
     pub fn rating<M: HookLoadModel<T>>(
         &self,
         model: &M,
         boom: BoomState<T>,
     ) -> Result<Rating<T>, CapacityError> {
-        let jack = model.jack_reaction_n(boom).map_err(CapacityError::Model)?;
+        let jack_reaction = model.jack_reaction_n(boom).map_err(CapacityError::Model)?;
+        self.rating_from(&CapacityTerms {
+            jack_reaction,
+            radius_m: model.radius_m(boom.angle_rad),
+        })
+    }
+
+    /// The rating from the model's terms at the boom state
+    /// ([`crane_model::load_model::CycleTerms::capacity`]).
+    pub fn rating_from(&self, terms: &CapacityTerms<T>) -> Result<Rating<T>, CapacityError> {
+        let jack = terms.jack_reaction;
         if !(jack.per_kg.is_finite() && jack.at_zero.is_finite()) {
             return Err(CapacityError::NotObservable);
         }
@@ -143,7 +155,7 @@ impl<T: Real> Capacity<T> {
         } else {
             None
         };
-        let radius_m = model.radius_m(boom.angle_rad);
+        let radius_m = terms.radius_m;
         if !radius_m.is_finite() {
             return Err(CapacityError::NotObservable);
         }

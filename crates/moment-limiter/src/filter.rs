@@ -15,11 +15,6 @@
 //! - it is stable for any time step, so replayed logs at other rates than
 //!   100 Hz are filtered correctly.
 //!
-//! The step comes from the limiter's integer clock ([`crate::clock`]), so it
-//! takes few distinct values (one on the board): the coefficient
-//! 1 − e^(−Δt/τ) and the group delay are computed when the step changes and
-//! reused, keeping `exp` out of the steady cycle.
-//!
 //! The limiter runs the force and the angle through the same filter, so the
 //! two stay aligned in time whatever the cut-off, and takes the angle's rate
 //! and acceleration as differences of the filtered angle (see
@@ -37,24 +32,52 @@ pub const MAX_STAGES: usize = 4;
 pub struct LowPass<T> {
     tau_s: T,
     stage_count: usize,
+    /// `stage_count` as a `T`, converted once (a run-time integer-to-float
+    /// conversion through `T::lit` goes through f64: soft float on the M4F).
+    stages_t: T,
+    /// The exponentials of the last time step: a cycle at the same period
+    /// reuses them instead of recomputing e^(−Δt/τ).
+    step: Option<Step<T>>,
     /// Outputs of the stages; `None` until the first sample.
     stages: Option<[T; MAX_STAGES]>,
-    /// (Δt, 1 − e^(−Δt/τ), delay) of the last step (see the module doc).
-    cached: (T, T, T),
+}
+
+/// What a time step Δt costs to know: the gain 1 − e^(−Δt/τ) of a stage and
+/// the filter's delay for samples Δt apart.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Step<T> {
+    dt_s: T,
+    gain: T,
+    delay_s: T,
 }
 
 impl<T: Real> LowPass<T> {
     /// A filter of `stages` stages (clamped to 1…[`MAX_STAGES`]), each with
     /// cut-off `cutoff_hz` (must be > 0).
     pub fn new(cutoff_hz: T, stages: usize) -> Self {
-        let tau_s = T::lit(1.0) / (T::two_pi() * cutoff_hz);
         let stage_count = stages.clamp(1, MAX_STAGES);
-        let zero = T::lit(0.0);
         Self {
-            tau_s,
+            tau_s: T::lit(1.0) / (T::two_pi() * cutoff_hz),
             stage_count,
+            stages_t: T::lit(stage_count as f64),
+            step: None,
             stages: None,
-            cached: (zero, zero, T::lit(stage_count as f64) * tau_s),
+        }
+    }
+
+    /// The step's exponentials, from the cache when Δt is the last one's.
+    fn step_for(&self, dt_s: T) -> Step<T> {
+        match self.step {
+            Some(step) if step.dt_s == dt_s => step,
+            _ => {
+                let x = dt_s / self.tau_s;
+                let delay_s = if x > T::lit(1e-6) && x.is_finite() {
+                    self.stages_t * dt_s / (x.exp() - T::lit(1.0))
+                } else {
+                    self.stages_t * self.tau_s
+                };
+                Step { dt_s, gain: T::lit(1.0) - (-x).exp(), delay_s }
+            }
         }
     }
 
@@ -62,20 +85,7 @@ impl<T: Real> LowPass<T> {
     /// a ramp, n·Δt/(e^(Δt/τ) − 1) for the discretised stages (n·τ − n·Δt/2
     /// to second order; n·τ as Δt → 0).
     pub fn delay_s(&self, dt_s: T) -> T {
-        if dt_s == self.cached.0 {
-            return self.cached.2;
-        }
-        self.compute_delay_s(dt_s)
-    }
-
-    fn compute_delay_s(&self, dt_s: T) -> T {
-        let n = T::lit(self.stage_count as f64);
-        let x = dt_s / self.tau_s;
-        if x > T::lit(1e-6) && x.is_finite() {
-            n * dt_s / (x.exp() - T::lit(1.0))
-        } else {
-            n * self.tau_s
-        }
+        self.step_for(dt_s).delay_s
     }
 
     /// Forgets the state: the next sample starts the filter at that value.
@@ -95,14 +105,9 @@ impl<T: Real> LowPass<T> {
                 } else {
                     T::lit(0.0)
                 };
-                if dt != self.cached.0 {
-                    self.cached = (
-                        dt,
-                        T::lit(1.0) - (-dt / self.tau_s).exp(),
-                        self.compute_delay_s(dt),
-                    );
-                }
-                let a = self.cached.1;
+                let step = self.step_for(dt);
+                self.step = Some(step);
+                let a = step.gain;
                 let mut input = x;
                 for s in st.iter_mut().take(self.stage_count) {
                     *s += a * (input - *s);

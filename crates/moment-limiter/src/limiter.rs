@@ -34,7 +34,7 @@
 
 use core::fmt;
 
-use crane_model::load_model::{BoomState, HookLoadModel};
+use crane_model::load_model::{BoomState, CycleQuery, HookLoadModel};
 use crane_model::Real;
 
 use crate::capacity::{Capacity, CapacityError};
@@ -413,6 +413,9 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     /// One hardware cycle: reads the counts, steps, drives the outputs. An
     /// output failure makes the next cycles FAULT (the outputs are wired so
     /// that a failed driver leaves the motions cut).
+    // A named function in every image: scripts/check-cycle-image.sh walks
+    // the call graph from it (no soft float, no panic in the cycle).
+    #[inline(never)]
     pub fn cycle<S: SensorInputs, O: Outputs>(
         &mut self,
         now: Ticks,
@@ -431,6 +434,8 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     }
 
     /// One cycle from a recorded frame in physical units (the replay's entry).
+    // Named in every image, as `cycle` (scripts/check-cycle-image.sh).
+    #[inline(never)]
     pub fn step_frame(&mut self, frame: &Frame<T>) -> StepReport<T> {
         let fault = |channel: Channel| move |kind: FaultKind| SensorFault { channel, kind };
         let readings = PressureBar::new(frame.p1_bar)
@@ -652,11 +657,17 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         }
     }
 
-    /// Stages 3–4: load, rating, utilization.
+    /// Stages 3–4: load, rating, utilization, from one query of the model.
     fn assess(&self, m: &Measurement<T>) -> Result<Estimate<T>, Fault> {
+        let terms = self.model.cycle_terms(CycleQuery {
+            force_angle_rad: m.boom.angle_rad,
+            now: m.boom_now,
+        });
+        let load_terms = terms
+            .load
+            .map_err(|e| Fault::Estimate(EstimateError::Model(e)))?;
         let load_kg = estimate_load_kg(
-            &self.model,
-            m.boom,
+            &load_terms,
             m.accel_rad_s2(),
             m.piston_force_n,
             &self.config.calibration,
@@ -665,10 +676,13 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         )
         .map_err(Fault::Estimate)?
             * self.config.load_reading_factor;
+        let capacity_terms = terms
+            .capacity
+            .map_err(|e| Fault::Capacity(CapacityError::Model(e)))?;
         let rating = self
             .config
             .capacity
-            .rating(&self.model, m.boom_now)
+            .rating_from(&capacity_terms)
             .map_err(Fault::Capacity)?;
         let ceiling = T::lit(UTILIZATION_CEILING);
         let utilization = if rating.rated_load_kg > T::lit(0.0) {

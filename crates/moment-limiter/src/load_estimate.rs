@@ -45,7 +45,7 @@
 //! with the rate, the model held the swing angle fixed and carried the load
 //! along: −2 % on the load in the 10 s moves, measured on the flexible model.)
 
-use crane_model::load_model::{BoomState, HookLoadModel, Quadratic};
+use crane_model::load_model::{BoomState, HookLoadModel, LoadTerms, Quadratic};
 use crane_model::{ModelError, Real};
 
 /// Direction of boom motion, from the filtered angle rate.
@@ -261,22 +261,22 @@ pub fn model_force_terms<T: Real, M: HookLoadModel<T>>(
 }
 
 /// Hook load (kg) from the filtered measured force (see the module doc).
-/// The force must already have the transducer offsets removed; `boom` is the
-/// state at the force's instant, `accel_rad_s2` the boom's angular
-/// acceleration then, and `tan_swing` tan φ of the load swing (0: hanging
-/// straight).
-pub fn estimate_load_kg<T: Real, M: HookLoadModel<T>>(
-    model: &M,
-    boom: BoomState<T>,
+/// The force must already have the transducer offsets removed; `terms` are
+/// the model's at the force's instant ([`crane_model::load_model::CycleTerms::load`]),
+/// `accel_rad_s2` the boom's angular acceleration then, and `tan_swing`
+/// tan φ of the load swing (0: hanging straight).
+pub fn estimate_load_kg<T: Real>(
+    terms: &LoadTerms<T>,
     accel_rad_s2: T,
     force_n: T,
     calibration: &Calibration<T>,
     friction: Friction,
     tan_swing: T,
 ) -> Result<T, EstimateError> {
-    let (f, inertia) =
-        model_force_terms(model, boom.angle_rad, accel_rad_s2).map_err(EstimateError::Model)?;
-    let f = f.scale_load_part(T::lit(1.0) + boom.angle_rad.tan() * tan_swing);
+    let inertia = terms.piston_force_per_boom_accel * accel_rad_s2;
+    let f = terms
+        .piston_force
+        .scale_load_part(T::lit(1.0) + terms.tan_angle * tan_swing);
     if !(f.at_zero.is_finite() && inertia.is_finite()) {
         return Err(EstimateError::NotObservable);
     }

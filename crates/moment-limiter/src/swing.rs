@@ -78,8 +78,10 @@ impl<T: Real> SwingGeometry<T> {
 
     /// Tip position relative to A0 (horizontal) and hanging length (m).
     fn tip(&self, angle_rad: T) -> (T, T) {
-        let x = self.boom_length_m * angle_rad.cos();
-        let l = self.foot_height_m + self.boom_length_m * angle_rad.sin() - self.load_clearance_m;
+        // Own-precision trigonometry: libm's f32 sin/cos run f64 kernels.
+        let (sin, cos) = angle_rad.sin_cos_own();
+        let x = self.boom_length_m * cos;
+        let l = self.foot_height_m + self.boom_length_m * sin - self.load_clearance_m;
         (x, l.max(T::lit(0.5)))
     }
 }
