@@ -19,6 +19,10 @@ pub trait Real: nalgebra::RealField + Copy {
     /// run f64 kernels (soft float on the Cortex-M4F). What the control cycle
     /// calls.
     fn sin_cos_own(self) -> (Self, Self);
+    /// Converts a run-time integer (a time step in µs, a count): the FPU's
+    /// `vcvt` for `f32`, never through `f64` (soft float on the controller).
+    /// Exact below 2²⁴ for `f32`, always for `f64`.
+    fn from_count(x: u32) -> Self;
 }
 
 impl Real for f64 {
@@ -38,6 +42,10 @@ impl Real for f64 {
     fn sin_cos_own(self) -> (Self, Self) {
         nalgebra::ComplexField::sin_cos(self)
     }
+    #[inline(always)]
+    fn from_count(x: u32) -> Self {
+        f64::from(x)
+    }
 }
 
 impl Real for f32 {
@@ -56,6 +64,10 @@ impl Real for f32 {
     #[inline(always)]
     fn sin_cos_own(self) -> (Self, Self) {
         sin_cos_f32(self)
+    }
+    #[inline(always)]
+    fn from_count(x: u32) -> Self {
+        x as f32
     }
 }
 

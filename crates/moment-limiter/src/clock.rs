@@ -196,7 +196,9 @@ impl<T: Real> Clock<T> {
             if self.step.0 != elapsed_us {
                 self.step = (
                     elapsed_us,
-                    T::lit(f64::from(elapsed_us) / f64::from(TICKS_PER_SECOND)),
+                    // Integer to float on the FPU, then one correctly rounded
+                    // division: no f64 (soft float on the controller).
+                    T::from_count(elapsed_us) / T::from_count(TICKS_PER_SECOND),
                 );
             }
             Ok(self.step.1)

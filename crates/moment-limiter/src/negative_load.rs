@@ -100,7 +100,9 @@ impl<T: Real> NegativeLoadMonitor<T> {
         let zero = T::lit(0.0);
         // The trigonometry only for negative readings (rare under load).
         let below = load_kg < zero && {
-            let arm = (self.bound.boom_length_m * angle_rad.cos()).max(zero);
+            // In f32 the type's own trigonometry, never libm's `cosf` (soft
+            // f64 on the controller).
+            let arm = (self.bound.boom_length_m * angle_rad.sin_cos_own().1).max(zero);
             load_kg * arm < self.bound.min_moment_kg_m
         };
         if !below {
