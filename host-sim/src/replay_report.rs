@@ -309,39 +309,19 @@ pub struct ReplayOutcome {
 }
 
 /// Replays a log file through the limiter exactly as `crane-sim replay`
-/// does (same model, configuration and calibration loader), silently.
+/// does (the same set-up, calibration loader and log reader), silently.
 pub fn replay_file(log: &Path, calibration: Option<&Path>) -> Result<ReplayOutcome> {
-    use crate::cmd::replay::{crane_load_model, load_calibration, read_line};
-    use moment_limiter::limiter::{Limiter, LimiterConfig};
-    use moment_limiter::log_format::LogParser;
-    use moment_limiter::replay::Replay;
+    use crate::cmd::replay::{for_each_record, load_calibration, new_replay};
 
     let file = std::fs::File::open(log).with_context(|| format!("cannot open log {}", log.display()))?;
-    let mut config = LimiterConfig::standard();
-    if let Some(path) = calibration {
-        config.calibration = load_calibration(path)?;
-    }
-    let limiter = Limiter::new(crane_load_model(), config).map_err(|e| anyhow::anyhow!("{e}"))?;
-    let mut replay = Replay::new(limiter, calibration.is_some());
-    let mut parser = LogParser::<f32>::new();
-    let mut reader = std::io::BufReader::new(file);
-    let mut buf = Vec::new();
+    let mut replay = new_replay(calibration.map(load_calibration).transpose()?)?;
     let mut recording = ReplayRecording::default();
     let mut events = Vec::new();
-    let error = loop {
-        let line = match read_line(&mut reader, &mut buf) {
-            Ok(Some(line)) => line,
-            Ok(None) => break parser.finish().err(),
-            Err(kind) => break Some(parser.reject_next_line(kind)),
-        };
-        let record = match parser.feed_line(&line) {
-            Ok(Some(record)) => record,
-            Ok(None) => continue,
-            Err(e) => break Some(e),
-        };
-        let (report, event) = replay.feed(&record);
-        recording.push(&record, &report);
+    let error = for_each_record(&mut std::io::BufReader::new(file), |_| {}, |record| {
+        let (report, event) = replay.feed(record);
+        recording.push(record, &report);
         events.extend(event);
-    };
+        Ok(())
+    })?;
     Ok(ReplayOutcome { recording, events, summary: replay.summary(), error })
 }

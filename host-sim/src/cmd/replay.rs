@@ -36,7 +36,7 @@ use crane_model::load_model::HookLoadModel;
 use moment_limiter::config_file;
 use moment_limiter::limiter::{Limiter, LimiterConfig};
 use moment_limiter::load_estimate::Calibration;
-use moment_limiter::log_format::{LogError, LogErrorKind, LogParser};
+use moment_limiter::log_format::{LogError, LogErrorKind, LogParser, Record};
 use moment_limiter::replay::{self, Replay, ReplayEvent};
 
 /// Arguments of `crane-sim replay`.
@@ -99,6 +99,46 @@ pub fn read_line<R: BufRead>(
     }
 }
 
+/// The limiter `crane-sim replay` runs (the controller's model and
+/// configuration, with `calibration` if given), in a fresh [`Replay`].
+pub fn new_replay(
+    calibration: Option<Calibration<f32>>,
+) -> anyhow::Result<Replay<f32, impl HookLoadModel<f32>>> {
+    let mut config = LimiterConfig::standard();
+    let calibrated = calibration.is_some();
+    if let Some(cal) = calibration {
+        config.calibration = cal;
+    }
+    let limiter = Limiter::new(crane_load_model(), config).map_err(|e| anyhow::anyhow!("{e}"))?;
+    Ok(Replay::new(limiter, calibrated))
+}
+
+/// Reads a log to its end or its first bad line, handing every data record
+/// to `on_record` and every line's length in bytes to `on_line`; returns
+/// why it stopped early, if it did (the error names the line and field).
+/// `on_record`'s own errors (an output that cannot be written) end it at once.
+pub fn for_each_record<R: BufRead>(
+    reader: &mut R,
+    mut on_line: impl FnMut(usize),
+    mut on_record: impl FnMut(&Record<f32>) -> anyhow::Result<()>,
+) -> anyhow::Result<Option<LogError>> {
+    let mut parser = LogParser::<f32>::new();
+    let mut buf = Vec::new();
+    Ok(loop {
+        let line = match read_line(reader, &mut buf) {
+            Ok(Some(line)) => line,
+            Ok(None) => break parser.finish().err(),
+            Err(kind) => break Some(parser.reject_next_line(kind)),
+        };
+        on_line(line.len() + 1);
+        match parser.feed_line(&line) {
+            Ok(Some(record)) => on_record(&record)?,
+            Ok(None) => {}
+            Err(e) => break Some(e),
+        }
+    })
+}
+
 /// Runs the subcommand; returns the exit code.
 pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
     let file =
@@ -106,13 +146,15 @@ pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
     if let Some(dir) = &args.report {
         std::fs::create_dir_all(dir).with_context(|| format!("cannot create report directory {}", dir.display()))?;
     }
-    let mut config = LimiterConfig::standard();
-    match &args.calibration {
-        Some(path) => config.calibration = load_calibration(path)?,
-        // The firmware prints the same note.
-        None => eprintln!("{}", replay::UNCALIBRATED_NOTE),
-    }
-    let limiter = Limiter::new(crane_load_model(), config).map_err(|e| anyhow::anyhow!("{e}"))?;
+    let calibration = match &args.calibration {
+        Some(path) => Some(load_calibration(path)?),
+        None => {
+            // The firmware prints the same note.
+            eprintln!("{}", replay::UNCALIBRATED_NOTE);
+            None
+        }
+    };
+    let mut replay = new_replay(calibration)?;
     let mut trace = match &args.trace {
         Some(path) => {
             let mut w = BufWriter::new(
@@ -126,50 +168,39 @@ pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
         None => None,
     };
 
-    let mut replay = Replay::new(limiter, args.calibration.is_some());
-    let mut parser = LogParser::<f32>::new();
     let mut events: Vec<ReplayEvent<f32>> = Vec::new();
     let mut progress = crate::progress::ReplayProgress::new(file.metadata().map_or(0, |m| m.len()));
     let mut recording = args.report.as_ref().map(|_| crate::replay_report::ReplayRecording::default());
     let mut reader = BufReader::new(file);
-    let mut buf = Vec::new();
     // A closed stdout (`| head -1`) ends the printing quietly and the replay
     // goes on, so the exit code still says 0 or 2 (`crate::stdout`).
     let mut out = crate::stdout::stdout();
     let mut text = String::new();
 
-    let error: Option<LogError> = loop {
-        let line = match read_line(&mut reader, &mut buf) {
-            Ok(Some(line)) => {
-                progress.advance(line.len() + 1);
-                line
+    let error = for_each_record(
+        &mut reader,
+        |bytes| progress.advance(bytes),
+        |record| {
+            let (report, event) = replay.feed(record);
+            if let Some(r) = recording.as_mut() {
+                r.push(record, &report);
             }
-            Ok(None) => break parser.finish().err(),
-            Err(kind) => break Some(parser.reject_next_line(kind)),
-        };
-        let record = match parser.feed_line(&line) {
-            Ok(Some(record)) => record,
-            Ok(None) => continue,
-            Err(e) => break Some(e),
-        };
-        let (report, event) = replay.feed(&record);
-        if let Some(r) = recording.as_mut() {
-            r.push(&record, &report);
-        }
-        if let Some(w) = trace.as_mut() {
-            text.clear();
-            replay::write_trace_line(&mut text, record.t_us, &report)?;
-            w.write_all(text.as_bytes())?;
-        }
-        if let Some(event) = event {
-            if !args.json {
+            if let Some(w) = trace.as_mut() {
                 text.clear();
-                replay::write_event_line(&mut text, &event)?;
-                out.write_all(text.as_bytes())?;
+                replay::write_trace_line(&mut text, record.t_us, &report)?;
+                w.write_all(text.as_bytes())?;
             }
-            events.push(event);
-        }
-    };
+            if let Some(event) = event {
+                if !args.json {
+                    text.clear();
+                    replay::write_event_line(&mut text, &event)?;
+                    out.write_all(text.as_bytes())?;
+                }
+                events.push(event);
+            }
+            Ok(())
+        },
+    )?;
 
     progress.finish();
     if let Some(mut w) = trace {
