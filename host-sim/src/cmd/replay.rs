@@ -123,14 +123,21 @@ pub fn for_each_record<R: BufRead>(
     mut on_record: impl FnMut(&Record<f32>) -> anyhow::Result<()>,
 ) -> anyhow::Result<Option<LogError>> {
     let mut parser = LogParser::<f32>::new();
-    let mut buf = Vec::new();
+    // One buffer for every line: a replay's cost is mostly reading the text.
+    let mut line = String::new();
     Ok(loop {
-        let line = match read_line(reader, &mut buf) {
-            Ok(Some(line)) => line,
-            Ok(None) => break parser.finish().err(),
-            Err(kind) => break Some(parser.reject_next_line(kind)),
-        };
-        on_line(line.len() + 1);
+        line.clear();
+        match reader.read_line(&mut line) {
+            Ok(0) => break parser.finish().err(),
+            Ok(n) => on_line(n),
+            Err(e) if e.kind() == std::io::ErrorKind::InvalidData => {
+                break Some(parser.reject_next_line(LogErrorKind::NotUtf8))
+            }
+            Err(_) => break Some(parser.reject_next_line(LogErrorKind::Unreadable)),
+        }
+        if line.ends_with('\n') {
+            line.pop();
+        }
         match parser.feed_line(&line) {
             Ok(Some(record)) => on_record(&record)?,
             Ok(None) => {}
