@@ -3,11 +3,10 @@
 //! the radius, it is the number the replayed limiter trips on, and `--plot`
 //! writes a real PNG or SVG by the file's extension.
 use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Output;
 
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_crane-sim"))
-}
+mod common;
+use common::bin;
 
 fn chart_json(extra: &[&str]) -> serde_json::Value {
     let out = bin().args(["chart", "--json"]).args(extra).output().expect("runs");

@@ -1,36 +1,8 @@
 //! `crane-sim replay` and `crane-sim calibrate` as a user runs them: the built
 //! binary, the example logs, malformed logs, exit codes (SPEC §5).
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_crane-sim"))
-}
-
-fn example(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../examples/logs")
-        .join(name)
-}
-
-fn replay(log: &Path, extra: &[&str]) -> Output {
-    bin()
-        .arg("replay")
-        .arg(log)
-        .args(extra)
-        .output()
-        .expect("run crane-sim")
-}
-
-fn text(b: &[u8]) -> String {
-    String::from_utf8_lossy(b).into_owned()
-}
-
-fn json(out: &Output) -> serde_json::Value {
-    serde_json::from_slice(&out.stdout)
-        .unwrap_or_else(|e| panic!("bad JSON ({e}): {}", text(&out.stdout)))
-}
+mod common;
+use common::{bin, example, json, replay, text};
 
 #[test]
 fn safe_lift_exits_0_and_stays_normal() {

@@ -3,15 +3,9 @@
 //! offline, nothing from the network), every figure is there as SVG and as a
 //! real PNG, and the replay page shows what the replay printed.
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_crane-sim"))
-}
-
-fn example(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/logs").join(name)
-}
+mod common;
+use common::{bin, example};
 
 /// Every `src="…"` and `href="…"` of a page.
 fn references(html: &str) -> Vec<String> {

@@ -2,38 +2,13 @@
 //! calibration files, usage errors, closed and failing stdout (issue 12,
 //! SPEC §4.7, §4.9, §5).
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Output, Stdio};
 
 use moment_limiter::log_format::parse_time_us;
 
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_crane-sim"))
-}
-
-fn example(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../examples/logs")
-        .join(name)
-}
-
-fn replay(log: &Path, extra: &[&str]) -> Output {
-    bin()
-        .arg("replay")
-        .arg(log)
-        .args(extra)
-        .output()
-        .expect("run crane-sim")
-}
-
-fn text(b: &[u8]) -> String {
-    String::from_utf8_lossy(b).into_owned()
-}
-
-fn json(out: &Output) -> serde_json::Value {
-    serde_json::from_slice(&out.stdout)
-        .unwrap_or_else(|e| panic!("bad JSON ({e}): {}", text(&out.stdout)))
-}
+mod common;
+use common::{bin, example, json, replay, text};
 
 /// Rewrites the `t_s` of every data row of `log` (first column) with `f`
 /// applied to its exact microseconds; writes the result to `out`.
