@@ -24,41 +24,7 @@ use std::sync::OnceLock;
 #[allow(dead_code)]
 mod model_reference;
 
-const TARGET: &str = "thumbv7em-none-eabihf";
-
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .parent()
-        .expect("tests/ is in the workspace root")
-        .to_path_buf()
-}
-
-fn in_ci() -> bool {
-    std::env::var_os("CI").is_some_and(|v| !v.is_empty() && v != "false" && v != "0")
-}
-
-fn qemu_present() -> bool {
-    Command::new("qemu-system-arm")
-        .arg("--version")
-        .output()
-        .is_ok_and(|o| o.status.success())
-}
-
-/// Skips (returns false) without QEMU outside CI.
-fn need_qemu() -> bool {
-    if qemu_present() {
-        return true;
-    }
-    assert!(!in_ci(), "qemu-system-arm is required in CI");
-    eprintln!("skipped: qemu-system-arm not found (scripts/install-test-deps.sh)");
-    false
-}
-
-fn cargo() -> Command {
-    let mut c = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()));
-    c.current_dir(root());
-    c
-}
+use crane_tests::{cargo, need_qemu, root, TARGET};
 
 /// The QEMU image, built once (`cargo build --release`, a no-op when fresh),
 /// and the stamp tool.
@@ -153,7 +119,7 @@ fn stamp_offset(elf: &[u8]) -> usize {
 
 #[test]
 fn hardfault_cuts_the_outputs_first() {
-    if !need_qemu() {
+    if !need_qemu("firmware_failsafe") {
         return;
     }
     let r = qemu(firmware(), &[&smoke_log(), "--trigger-hardfault"]);
@@ -187,7 +153,7 @@ fn hardfault_cuts_the_outputs_first() {
 
 #[test]
 fn self_test_passes_on_a_clean_stamped_image_and_replay_is_unchanged() {
-    if !need_qemu() {
+    if !need_qemu("firmware_failsafe") {
         return;
     }
     let elf = image_copy("stamped.elf", true);
@@ -211,7 +177,7 @@ fn self_test_passes_on_a_clean_stamped_image_and_replay_is_unchanged() {
 
 #[test]
 fn unstamped_qemu_image_runs_and_says_so() {
-    if !need_qemu() {
+    if !need_qemu("firmware_failsafe") {
         return;
     }
     let r = qemu(firmware(), &[&smoke_log(), "--self-test"]);
@@ -225,7 +191,7 @@ fn unstamped_qemu_image_runs_and_says_so() {
 
 #[test]
 fn self_test_fails_on_a_wrong_stamped_checksum() {
-    if !need_qemu() {
+    if !need_qemu("firmware_failsafe") {
         return;
     }
     let elf = image_copy("bad-crc.elf", true);
@@ -256,7 +222,7 @@ fn self_test_fails_on_a_wrong_stamped_checksum() {
 
 #[test]
 fn self_test_fails_on_code_altered_after_stamping() {
-    if !need_qemu() {
+    if !need_qemu("firmware_failsafe") {
         return;
     }
     let elf = image_copy("bad-code.elf", true);

@@ -17,31 +17,7 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-const TARGET: &str = "thumbv7em-none-eabihf";
-
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .parent()
-        .expect("tests/ is in the workspace root")
-        .to_path_buf()
-}
-
-fn in_ci() -> bool {
-    std::env::var_os("CI").is_some_and(|v| !v.is_empty() && v != "false" && v != "0")
-}
-
-fn qemu_present() -> bool {
-    Command::new("qemu-system-arm")
-        .arg("--version")
-        .output()
-        .is_ok_and(|o| o.status.success())
-}
-
-fn cargo() -> Command {
-    let mut c = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()));
-    c.current_dir(root());
-    c
-}
+use crane_tests::{cargo, need_qemu, root, TARGET};
 
 fn build(args: &[&str]) {
     let status = cargo()
@@ -197,15 +173,7 @@ fn compare(label: &str, log: &Path, extra: &[&str]) -> String {
 
 #[test]
 fn qemu_and_host_replays_give_identical_timelines() {
-    if !qemu_present() {
-        assert!(
-            !in_ci(),
-            "qemu-system-arm is missing in CI: run scripts/install-test-deps.sh first"
-        );
-        eprintln!(
-            "SKIPPED qemu_replay: qemu-system-arm not found (run scripts/install-test-deps.sh); \
-             this test is never skipped when CI is set"
-        );
+    if !need_qemu("qemu_replay") {
         return;
     }
     build(&["--target", TARGET, "-p", "firmware"]);
@@ -282,14 +250,7 @@ fn in_process_f32(log: &Path, calibration: Option<&Path>) -> (String, i32) {
 /// on the host (same parser, limiter, model and formatter).
 #[test]
 fn qemu_output_is_byte_identical_to_the_same_f32_code_on_the_host() {
-    if !qemu_present() {
-        assert!(
-            !in_ci(),
-            "qemu-system-arm is missing in CI: run scripts/install-test-deps.sh first"
-        );
-        eprintln!(
-            "SKIPPED qemu_replay: qemu-system-arm not found (run scripts/install-test-deps.sh)"
-        );
+    if !need_qemu("qemu_replay") {
         return;
     }
     build(&["--target", TARGET, "-p", "firmware"]);
@@ -312,18 +273,6 @@ fn qemu_output_is_byte_identical_to_the_same_f32_code_on_the_host() {
             assert_eq!(q.code, code, "{} {extra:?}: exit code", log.display());
         }
     }
-}
-
-fn skip_without_qemu() -> bool {
-    if qemu_present() {
-        return false;
-    }
-    assert!(
-        !in_ci(),
-        "qemu-system-arm is missing in CI: run scripts/install-test-deps.sh first"
-    );
-    eprintln!("SKIPPED qemu_replay: qemu-system-arm not found (run scripts/install-test-deps.sh)");
-    true
 }
 
 /// A scratch directory under `target/` (paths without spaces or commas, as
@@ -369,7 +318,7 @@ fn events_without_time(text: &str) -> Vec<String> {
 /// events at the same samples on the MCU (QEMU), identical to the host's.
 #[test]
 fn qemu_shifted_logs_give_identical_events() {
-    if skip_without_qemu() {
+    if !need_qemu("qemu_replay") {
         return;
     }
     build(&["--target", TARGET, "-p", "firmware"]);
@@ -413,7 +362,7 @@ fn qemu_shifted_logs_give_identical_events() {
 /// with exit 1 and the same message as `crane-sim replay`.
 #[test]
 fn qemu_refuses_every_hostile_calibration_like_the_host() {
-    if skip_without_qemu() {
+    if !need_qemu("qemu_replay") {
         return;
     }
     build(&["--target", TARGET, "-p", "firmware"]);
