@@ -18,6 +18,7 @@
 //! friction held at standstill relaxes with a release time.
 
 use crane_model::multibody::ThesisModel;
+use crane_model::integrator::NewtonStart;
 use crane_model::simulation::{Maneuver, Program, Sample, SimulationOptions};
 use moment_limiter::conversion::SensorConversion;
 use moment_limiter::fault_injector::Rng;
@@ -162,6 +163,9 @@ impl SynthRow {
 /// sample period (s), a whole number of 2 ms integration steps.
 pub fn options_for_rate(rate_hz: f64) -> (SimulationOptions, f64) {
     let mut options = SimulationOptions::for_type::<f64>();
+    // Logs need the physics, not the reference iterate: the extrapolated start
+    // saves about a fifth of the evaluations (the campaign uses the same).
+    options.newton_start = NewtonStart::Extrapolated;
     let every = (1.0 / (rate_hz * options.step_s)).round().max(1.0) as usize;
     options.output_every = every;
     (options, every as f64 * options.step_s)

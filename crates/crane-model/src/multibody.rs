@@ -180,31 +180,44 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         rigid: &RigidMotion<T>,
         free: &FreeCoordinates<T, M>,
     ) -> Configuration<T, M> {
-        let eta = SVector::<T, M>::from_column_slice(&free.eta);
-        let eta_rate = SVector::<T, M>::from_column_slice(&free.eta_rate);
-        let tip_modes = SMatrix::<T, 2, M>::from_fn(|r, c| self.modes.tip_modes[r][c]);
-        let rot = rigid.rot;
-        let tip_body = Vector2::new(self.modes.length_m, T::zero()) + tip_modes * eta;
-        let w1 = rigid.mech.boom.angular_velocity;
-        let tip_position = rigid.mech.boom.position + rot * tip_body;
-        let tip_velocity =
-            rot * (Vector2::new(-tip_body.y, tip_body.x) * w1 + tip_modes * eta_rate);
-        Configuration {
+        let zero = Vector2::zeros();
+        let mut cfg = Configuration {
             mech: rigid.mech,
             pendulum: rigid.pendulum,
             cylinder: rigid.cylinder,
-            eta,
-            eta_rate,
-            rot,
-            tip_modes,
-            tip_body,
-            tip_position,
-            tip_velocity,
+            eta: SVector::zeros(),
+            eta_rate: SVector::zeros(),
+            rot: rigid.rot,
+            tip_modes: SMatrix::<T, 2, M>::from_fn(|r, c| self.modes.tip_modes[r][c]),
+            tip_body: zero,
+            tip_position: zero,
+            tip_velocity: zero,
             swing_rad: free.swing_rad,
-            swing_axis: unit(free.swing_rad),
+            swing_axis: zero,
             swing_rate: free.swing_rate,
             load_kg: rigid.load_kg,
-        }
+        };
+        self.reconfigure(&mut cfg, free);
+        cfg
+    }
+
+    /// Stage 1b again for other free coordinates at the same instant: only the
+    /// parts that depend on them change (the Newton iteration's trial states share
+    /// one rigid motion, so they need not copy it again).
+    pub fn reconfigure(&self, cfg: &mut Configuration<T, M>, free: &FreeCoordinates<T, M>) {
+        let eta = SVector::<T, M>::from_column_slice(&free.eta);
+        let eta_rate = SVector::<T, M>::from_column_slice(&free.eta_rate);
+        let tip_body = Vector2::new(self.modes.length_m, T::zero()) + cfg.tip_modes * eta;
+        let w1 = cfg.mech.boom.angular_velocity;
+        cfg.tip_position = cfg.mech.boom.position + cfg.rot * tip_body;
+        cfg.tip_velocity =
+            cfg.rot * (Vector2::new(-tip_body.y, tip_body.x) * w1 + cfg.tip_modes * eta_rate);
+        cfg.tip_body = tip_body;
+        cfg.eta = eta;
+        cfg.eta_rate = eta_rate;
+        cfg.swing_rad = free.swing_rad;
+        cfg.swing_axis = unit(free.swing_rad);
+        cfg.swing_rate = free.swing_rate;
     }
 
     /// Stage 1, kinematics: every body's position and velocity for actuator motion

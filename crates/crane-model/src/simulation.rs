@@ -3,7 +3,7 @@
 //! its figures at every sample.
 
 use crate::dynamics::Reactions;
-use crate::integrator::State;
+use crate::integrator::{NewtonStart, State};
 use crate::multibody::{CraneModel, FreeCoordinates};
 use crate::profile::{ActuatorMotion, RampShape, StrokeProfile};
 use crate::rope::RopeChoice;
@@ -400,6 +400,8 @@ pub struct SimulationOptions {
     pub initial: InitialState,
     /// What each sample computes.
     pub outputs: Outputs,
+    /// Where each step's Newton iteration starts (the reference start by default).
+    pub newton_start: NewtonStart,
 }
 
 /// What a [`Sample`] carries.
@@ -425,6 +427,7 @@ impl SimulationOptions {
             tolerance: if f32_like { 1e-5 } else { 1e-10 },
             initial: InitialState::Equilibrium,
             outputs: Outputs::All,
+            newton_start: NewtonStart::PreviousStep,
         }
     }
 }
@@ -548,7 +551,8 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
             InitialState::ListingProjection => model.listing_initial_state(start, load0)?,
             InitialState::Equilibrium => model.equilibrium_state(start, load0)?,
         };
-        let (mut state, ev) = State::new(&model, T::zero(), sched.actuator_at(T::zero()), load0, free)?;
+        let (mut state, mut ev) = State::new(&model, T::zero(), sched.actuator_at(T::zero()), load0, free)?;
+        state.newton_start = options.newton_start;
         let mut summary = RunSummary {
             steps: 0,
             evaluations: 1,
@@ -566,13 +570,18 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
             let t = T::lit(i as f64 * options.step_s);
             let act = sched.actuator_at(t);
             let load = sched.load_at(t);
-            let stats = state.step_with_load(&model, h, act, load, tol)?;
-            state.t_s = t;
-            summary.steps = i;
-            summary.evaluations += stats.iterations;
-            if i % options.output_every == 0 || i == steps {
-                let ev = model.evaluate(act, load, &state.free)?;
-                summary.evaluations += 1;
+            let rigid = model.rigid_motion(act, load)?;
+            let sampled = i % options.output_every == 0 || i == steps;
+            if !sampled {
+                let stats = state.step_to(&model, h, &rigid, tol)?;
+                state.t_s = t;
+                summary.steps = i;
+                summary.evaluations += stats.evaluations;
+            } else {
+                let stats = state.step_to_sampled(&model, h, &rigid, tol, &mut ev)?;
+                state.t_s = t;
+                summary.steps = i;
+                summary.evaluations += stats.evaluations;
                 let s = model.sample_with(&ev, t, stats.iterations, options.outputs)?;
                 summary.max_constraint_violation =
                     summary.max_constraint_violation.max(s.constraint_violation);

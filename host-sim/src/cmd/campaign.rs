@@ -36,6 +36,7 @@ use anyhow::{bail, Context, Result};
 use crane_model::multibody::ThesisModel;
 use crane_model::profile::RampShape;
 use crane_model::rope::RopeChoice;
+use crane_model::integrator::NewtonStart;
 use crane_model::simulation::{Direction, Maneuver, Outputs, Program, Segment, SimulationOptions};
 use rayon::prelude::*;
 use serde::Serialize;
@@ -623,7 +624,12 @@ fn run_campaign(args: &CampaignArgs, progress: bool) -> Result<(Summary, Vec<Str
     if !(args.step_ms >= 0.5 && args.step_ms <= 10.0 && (10.0 / args.step_ms - (10.0 / args.step_ms).round()).abs() < 1e-9) {
         bail!("--step-ms must divide the 10 ms log period and lie in [0.5, 10]");
     }
-    let mut options = SimulationOptions { step_s: args.step_ms * 1e-3, ..SimulationOptions::for_type::<f64>() };
+    // The same Newton start as `synth`, so a scenario re-made from its flags is the same log.
+    let mut options = SimulationOptions {
+        step_s: args.step_ms * 1e-3,
+        newton_start: NewtonStart::Extrapolated,
+        ..SimulationOptions::for_type::<f64>()
+    };
     options.output_every = (10.0 / args.step_ms).round() as usize;
     let dt = options.output_every as f64 * options.step_s;
     // Synthesis needs the piston force only (inverse dynamics along the actuator).
