@@ -6,12 +6,12 @@
 // criterion_group! generates an undocumented function.
 #![allow(missing_docs)]
 use criterion::{criterion_group, criterion_main, Criterion};
-use crane_model::integrator::NewtonStart;
-use crane_model::modal::{MeshRefinement, THESIS_BASIS};
+use crane_model::sim::integrator::NewtonStart;
+use crane_model::structure::modal::{MeshRefinement, THESIS_BASIS};
 use crane_model::multibody::ThesisModel;
-use crane_model::profile::RampShape;
-use crane_model::rope::RopeChoice;
-use crane_model::simulation::{Direction, Maneuver, Outputs, SimulationOptions};
+use crane_model::data::profile::RampShape;
+use crane_model::multibody::rope::RopeChoice;
+use crane_model::sim::simulation::{Direction, Maneuver, Outputs, SimulationOptions};
 use crane_model::CraneData;
 use std::hint::black_box;
 

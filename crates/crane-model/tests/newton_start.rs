@@ -3,13 +3,13 @@
 //! iteration's answer far below what any sensor resolves, in both rope modes and
 //! through a lift-off, with fewer evaluations.
 
-use crane_model::crane::CraneData;
-use crane_model::integrator::NewtonStart;
-use crane_model::modal::{MeshRefinement, THESIS_BASIS};
+use crane_model::data::crane::CraneData;
+use crane_model::data::profile::RampShape;
+use crane_model::multibody::rope::RopeChoice;
 use crane_model::multibody::ThesisModel;
-use crane_model::profile::RampShape;
-use crane_model::rope::RopeChoice;
-use crane_model::simulation::{Direction, Maneuver, Program, RunSummary, Sample, Segment, SimulationOptions};
+use crane_model::sim::integrator::NewtonStart;
+use crane_model::sim::simulation::{Direction, Maneuver, Program, RunSummary, Sample, Segment, SimulationOptions};
+use crane_model::structure::modal::{MeshRefinement, THESIS_BASIS};
 
 fn model() -> ThesisModel<f64> {
     ThesisModel::<f64>::build(&CraneData::coles_mobile_930(), MeshRefinement::THESIS, &THESIS_BASIS).expect("thesis model")

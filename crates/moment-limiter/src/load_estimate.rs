@@ -10,7 +10,7 @@
 //!
 //! so W solves F_model(W) = F_meas − force_offset − friction(direction). The
 //! model's F_model is exactly quadratic in W (the boom's sag grows with the
-//! load, [`crane_model::load_model::Quadratic`]); its slope per kg is close to
+//! load, [`crane_model::loads::load_model::Quadratic`]); its slope per kg is close to
 //! constant, and a load for which the slope at W = 0 is not positive, or which
 //! no load on the rising branch explains, is not observable (a FAULT).
 //!
@@ -20,7 +20,7 @@
 //! anywhere between the two frictions. The limiter takes the middle of that
 //! interval ([`Friction`]), so the force is misread by at most half the
 //! friction; the ×1.05 reading of the load
-//! ([`crate::limiter::LimiterConfig::load_reading_factor`]) keeps such an
+//! ([`crate::cycle::LimiterConfig::load_reading_factor`]) keeps such an
 //! error above the true load while half the friction is under 5 % of the
 //! load's share of the force. With 10 kN of friction and 3.3 t that holds
 //! below about 65° (half the friction is 2.5 % of the load at 40°, 3.9 % at
@@ -45,7 +45,7 @@
 //! with the rate, the model held the swing angle fixed and carried the load
 //! along: −2 % on the load in the 10 s moves, measured on the flexible model.)
 
-use crane_model::load_model::{BoomState, HookLoadModel, LoadTerms, Quadratic};
+use crane_model::loads::load_model::{BoomState, HookLoadModel, LoadTerms, Quadratic};
 use crane_model::{ModelError, Real};
 
 /// Direction of boom motion, from the filtered angle rate.
@@ -262,7 +262,7 @@ pub fn model_force_terms<T: Real, M: HookLoadModel<T>>(
 
 /// Hook load (kg) from the filtered measured force (see the module doc).
 /// The force must already have the transducer offsets removed; `terms` are
-/// the model's at the force's instant ([`crane_model::load_model::CycleTerms::load`]),
+/// the model's at the force's instant ([`crane_model::loads::load_model::CycleTerms::load`]),
 /// `accel_rad_s2` the boom's angular acceleration then, and `tan_swing`
 /// tan φ of the load swing (0: hanging straight).
 pub fn estimate_load_kg<T: Real>(
