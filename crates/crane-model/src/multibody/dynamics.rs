@@ -7,6 +7,7 @@ use crate::multibody::{
     CONSTRAINTS, MAX_COORDS,
 };
 use crate::data::profile::ActuatorMotion;
+use crate::multibody::layout::mode_index;
 use crate::multibody::mechanism::perp;
 use crate::{ModelError, Real};
 use nalgebra::{SMatrix, SVector, Vector2};
@@ -92,7 +93,7 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
             acc[i + 2] = b.angular_acceleration;
         }
         for k in 0..M {
-            acc[3 + k] = ev.eta_accel[k];
+            acc[mode_index(k)] = ev.eta_accel[k];
         }
         let i5 = Self::body_index(5);
         let tip =

@@ -14,6 +14,7 @@
 
 pub mod bodies;
 mod boom;
+pub mod layout;
 pub mod dynamics;
 pub mod mechanism;
 pub mod rope;
@@ -23,6 +24,7 @@ use crate::multibody::bodies::{CylinderMass, Pendulum, RigidMass};
 use crate::data::crane::CraneData;
 use crate::structure::dense::Square;
 use crate::multibody::boom::{subtract_elastic, BoomModal};
+use crate::multibody::layout::{coordinate_count, mode_index};
 use crate::multibody::mechanism::{perp, unit, MechanismGeometry, MechanismMotion};
 use crate::structure::modal::{BoomModes, MeshRefinement, ModalAnalysis};
 use crate::data::profile::ActuatorMotion;
@@ -32,8 +34,8 @@ use nalgebra::{Matrix2, SMatrix, SVector, Vector2};
 
 /// Number of constraints (thesis §3.3.1, one dependent equation dropped).
 pub const CONSTRAINTS: usize = 14;
-/// Most generalized coordinates (8 modes + 15).
-pub const MAX_COORDS: usize = crate::structure::modal::MAX_MODES + 15;
+/// Most generalized coordinates (8 modes + 15, [`layout`]).
+pub const MAX_COORDS: usize = coordinate_count(crate::structure::modal::MAX_MODES);
 
 /// The crane model: constant data only (thesis's time-invariant matrices, §2.6).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -277,7 +279,7 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
     /// Q + f + f_s + f_d, constraint Jacobian B and the right side γ = −Ḃy + ġ of
     /// B·ẏ = γ (eqs. 2.59, 2.67, 2.68), over all M + 15 coordinates.
     pub fn full_system(&self, cfg: &Configuration<T, M>) -> Result<FullSystem<T>, ModelError> {
-        let n = M + 15;
+        let n = Self::COORDS;
         let mut sys = FullSystem {
             n,
             position: [T::zero(); MAX_COORDS],
@@ -300,23 +302,23 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         let (inertia, tj_first, td) = (terms.inertia, terms.tj_first, terms.td);
         sys.set_body(0, b1.position, th1, b1.velocity, w1);
         for k in 0..M {
-            sys.position[3 + k] = cfg.eta[k];
-            sys.velocity[3 + k] = cfg.eta_rate[k];
+            sys.position[mode_index(k)] = cfg.eta[k];
+            sys.velocity[mode_index(k)] = cfg.eta_rate[k];
         }
         for i in 0..2 {
             sys.mass.set(i, i, m.mass_kg);
             sys.mass.set(i, 2, tj_first[i]);
             sys.mass.set(2, i, tj_first[i]);
             for k in 0..M {
-                sys.mass.set(i, 3 + k, td[(i, k)]);
-                sys.mass.set(3 + k, i, td[(i, k)]);
+                sys.mass.set(i, mode_index(k), td[(i, k)]);
+                sys.mass.set(mode_index(k), i, td[(i, k)]);
             }
         }
         sys.mass.set(2, 2, inertia);
         for k in 0..M {
-            sys.mass.set(2, 3 + k, h[k]);
-            sys.mass.set(3 + k, 2, h[k]);
-            sys.mass.set(3 + k, 3 + k, T::one());
+            sys.mass.set(2, mode_index(k), h[k]);
+            sys.mass.set(mode_index(k), 2, h[k]);
+            sys.mass.set(mode_index(k), mode_index(k), T::one());
         }
         let mut q_eta = coupling * (w1 * w1) - skew * cfg.eta_rate * (two * w1);
         subtract_elastic(m, &mut q_eta, &cfg.eta, &cfg.eta_rate);
@@ -326,16 +328,16 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         sys.force[1] = f_r.y;
         sys.force[2] = tj_first.dot(&g) + terms.q_th;
         for k in 0..M {
-            sys.force[3 + k] = f_eta[k];
+            sys.force[mode_index(k)] = f_eta[k];
         }
         // ---- Rigid bodies 2–4 (eqs. 3.12–3.16).
         let rigid = [
-            (1usize, &mech.lug, self.lug),
-            (2, &mech.rod, self.rod),
-            (3, &mech.cylinder, cfg.cylinder),
+            (2usize, &mech.lug, self.lug),
+            (3, &mech.rod, self.rod),
+            (4, &mech.cylinder, cfg.cylinder),
         ];
         for (body, motion, mass) in rigid {
-            let base = 3 + M + 3 * (body - 1);
+            let base = Self::body_index(body);
             sys.set_body(
                 base,
                 motion.position,
@@ -356,7 +358,7 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
             sys.force[base + 2] = torque;
         }
         // ---- Body 5: rope and load, length L(t) (see `reduced_equations`).
-        let base5 = 3 + M + 9;
+        let base5 = Self::body_index(5);
         let p = &cfg.pendulum;
         let (th5, w5) = (cfg.swing_rad, cfg.swing_rate);
         let (e5, n5) = (cfg.swing_axis, perp(cfg.swing_axis));
@@ -374,7 +376,7 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
     /// rows of B, the acceleration right side γ and the position residual Φ.
     fn constraints(&self, cfg: &Configuration<T, M>, sys: &mut FullSystem<T>) {
         let two = T::lit(2.0);
-        let (b2, b3, b4, b5) = (3 + M, 3 + M + 3, 3 + M + 6, 3 + M + 9);
+        let (b2, b3, b4, b5) = (Self::body_index(2), Self::body_index(3), Self::body_index(4), Self::body_index(5));
         let x = |s: &FullSystem<T>, i: usize| Vector2::new(s.position[i], s.position[i + 1]);
         let v = |s: &FullSystem<T>, i: usize| Vector2::new(s.velocity[i], s.velocity[i + 1]);
         let a0 = self.geometry.boom_foot;
@@ -396,7 +398,7 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         sys.jacobian[6][2] = T::one();
         let mut lug_rot = T::zero();
         for k in 0..M {
-            sys.jacobian[6][3 + k] = self.modes.lug_rotation_modes[k];
+            sys.jacobian[6][mode_index(k)] = self.modes.lug_rotation_modes[k];
             lug_rot += self.modes.lug_rotation_modes[k] * cfg.eta[k];
         }
         sys.jacobian[6][b2 + 2] = -T::one();
@@ -455,7 +457,7 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
             sys.jacobian[row][i] = T::one();
             sys.jacobian[row][2] = tj_tip[i];
             for k in 0..M {
-                sys.jacobian[row][3 + k] = t_modes[(i, k)];
+                sys.jacobian[row][mode_index(k)] = t_modes[(i, k)];
             }
             sys.jacobian[row][b5 + i] = -T::one();
             sys.gamma[row] = gam_c[i];
@@ -463,22 +465,22 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         }
     }
 
-    /// Index of the first coordinate of body `k` (1..=5).
+    /// Number of generalized coordinates, M + 15 ([`layout`]).
+    pub const COORDS: usize = coordinate_count(M);
+
+    /// Index of the first coordinate of body `k` (1..=5, [`layout`]).
     pub const fn body_index(k: usize) -> usize {
-        if k <= 1 {
-            0
-        } else {
-            3 + M + 3 * (k - 2)
-        }
+        layout::body_index(k, M)
     }
 
     /// The dependent coordinates (everything but the modes and the swing angle θ5).
     pub fn dependent_indices() -> [usize; CONSTRAINTS] {
-        let (b2, b3, b4, b5) = (3 + M, 3 + M + 3, 3 + M + 6, 3 + M + 9);
+        let b1 = Self::body_index(1);
+        let (b2, b3, b4, b5) = (Self::body_index(2), Self::body_index(3), Self::body_index(4), Self::body_index(5));
         [
-            0,
-            1,
-            2,
+            b1,
+            b1 + 1,
+            b1 + 2,
             b2,
             b2 + 1,
             b2 + 2,
