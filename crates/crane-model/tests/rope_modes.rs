@@ -413,7 +413,7 @@ fn held_bounce_frequency_at_40_deg_matches_the_boom_with_a_tip_mass() {
 
 /// Total energy with the actuator locked: kinetic ½ẏᵀMẏ over all coordinates,
 /// gravity potential of the boom's deformable part and of body 5, strain ½Σω²η²
-/// (as in `dynamics_checks.rs`; the rigid bodies 1–4 do not move).
+/// (as in `solver_checks.rs`; the rigid bodies 1–4 do not move).
 fn energy(model: &ThesisModel<f64>, act: ActuatorMotion<f64>, load: f64, free: &FreeCoordinates<f64, 4>) -> f64 {
     let cfg = model.kinematics(act, load, free).expect("kinematics");
     let sys = model.full_system(&cfg).expect("full system");
