@@ -198,7 +198,7 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         let w1 = rigid.mech.boom.angular_velocity;
         let tip_position = rigid.mech.boom.position + rot * tip_body;
         let tip_velocity =
-            rot * (perp(tip_body) * w1 + tip_modes * eta_rate);
+            rot * (Vector2::new(-tip_body.y, tip_body.x) * w1 + tip_modes * eta_rate);
         Configuration {
             mech: rigid.mech,
             pendulum: rigid.pendulum,
