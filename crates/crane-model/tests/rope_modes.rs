@@ -5,13 +5,12 @@
 //! statically indistinguishable from the thesis rope, and riding up with the tip.
 
 use crane_model::data::crane::CraneData;
-use crane_model::structure::modal::{MeshRefinement, THESIS_BASIS};
+use crane_model::structure::modal::MeshRefinement;
 use crane_model::multibody::ThesisModel;
 use crane_model::sim::simulation::{thesis_cases, SimulationOptions};
 
-fn model() -> ThesisModel<f64> {
-    ThesisModel::<f64>::build(&CraneData::coles_mobile_930(), MeshRefinement::THESIS, &THESIS_BASIS).expect("thesis model")
-}
+mod common;
+use common::dynamics::model;
 
 /// Every 137th output sample of the twelve thesis cases, computed by the code before
 /// the rope modes existed (commit 9c75c73): t, piston force, F_A, tip deflection, swing.
