@@ -9,6 +9,7 @@
 //! | module | what it holds |
 //! |---|---|
 //! | [`cli`] | the command line and the dispatch to a command |
+//! | [`choices`] | the one spelling of each named choice (profile, direction, initial state, rope), command line and maneuver file alike |
 //! | [`cmd`] | one module per subcommand: its arguments and its `run` |
 //! | [`model`] | the thesis model as the commands build it |
 //! | [`rating`] | the limiter's rated load, as the chart and the campaign read it |
@@ -18,6 +19,7 @@
 //! | [`plot`] | figures (SVG and PNG) |
 //! | [`progress`], [`stdout`] | the progress bar and a stdout that ends quietly on a closed pipe |
 
+pub mod choices;
 pub mod cli;
 pub mod cmd;
 pub mod maneuver_file;

@@ -5,6 +5,7 @@
 //! Every key is checked: unknown keys are refused, and a value out of range is
 //! reported with the segment it belongs to.
 
+use crate::choices::{self, ProfileArg, RopeArg};
 use anyhow::{bail, Context, Result};
 use crane_model::data::profile::RampShape;
 use crane_model::multibody::rope::RopeChoice;
@@ -76,30 +77,19 @@ pub fn default_ramp_s(duration_s: f64) -> f64 {
     }
 }
 
-/// Parses a ramp shape name.
+/// Parses a ramp shape name (the command line's `--profile` values).
 pub fn shape(name: &str) -> Result<RampShape> {
-    match name {
-        "linear" => Ok(RampShape::Linear),
-        "cycloidal" => Ok(RampShape::Cycloidal),
-        other => bail!("profile must be `linear` or `cycloidal`, got `{other}`"),
-    }
+    choices::parse::<ProfileArg>("profile", name).map(RampShape::from)
 }
 
-/// The rope from its name and optional length.
+/// The rope from its name (the command line's `--rope` values; default
+/// `thesis`) and optional length.
 pub fn rope(name: Option<&str>, length_m: Option<f64>) -> Result<RopeChoice> {
-    match (name.unwrap_or("thesis"), length_m) {
-        ("thesis", None) => Ok(RopeChoice::Thesis),
-        ("thesis", Some(_)) => bail!("a rope length applies to the held rope only (rope = \"held\")"),
-        ("held", l) => {
-            if let Some(l) = l {
-                if !(l > 0.0 && l.is_finite()) {
-                    bail!("rope length must be a number > 0 m, got {l}");
-                }
-            }
-            Ok(RopeChoice::Held { length_m: l })
-        }
-        (other, _) => bail!("rope must be `thesis` or `held`, got `{other}`"),
-    }
+    let rope = match name {
+        None => RopeArg::Thesis,
+        Some(name) => choices::parse::<RopeArg>("rope", name)?,
+    };
+    rope.choice(length_m)
 }
 
 impl ManeuverFile {

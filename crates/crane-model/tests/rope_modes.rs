@@ -5,13 +5,12 @@
 //! statically indistinguishable from the thesis rope, and riding up with the tip.
 
 use crane_model::data::crane::CraneData;
-use crane_model::structure::modal::{MeshRefinement, THESIS_BASIS};
+use crane_model::structure::modal::MeshRefinement;
 use crane_model::multibody::ThesisModel;
 use crane_model::sim::simulation::{thesis_cases, SimulationOptions};
 
-fn model() -> ThesisModel<f64> {
-    ThesisModel::<f64>::build(&CraneData::coles_mobile_930(), MeshRefinement::THESIS, &THESIS_BASIS).expect("thesis model")
-}
+mod common;
+use common::dynamics::model;
 
 /// Every 137th output sample of the twelve thesis cases, computed by the code before
 /// the rope modes existed (commit 9c75c73): t, piston force, F_A, tip deflection, swing.
@@ -413,7 +412,7 @@ fn held_bounce_frequency_at_40_deg_matches_the_boom_with_a_tip_mass() {
 
 /// Total energy with the actuator locked: kinetic ½ẏᵀMẏ over all coordinates,
 /// gravity potential of the boom's deformable part and of body 5, strain ½Σω²η²
-/// (as in `dynamics_checks.rs`; the rigid bodies 1–4 do not move).
+/// (as in `solver_checks.rs`; the rigid bodies 1–4 do not move).
 fn energy(model: &ThesisModel<f64>, act: ActuatorMotion<f64>, load: f64, free: &FreeCoordinates<f64, 4>) -> f64 {
     let cfg = model.kinematics(act, load, free).expect("kinematics");
     let sys = model.full_system(&cfg).expect("full system");

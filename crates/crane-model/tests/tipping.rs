@@ -1,14 +1,12 @@
 //! Issue 4: tipping and the lifting capacity (thesis §4.3.2, eqs. 4.2–4.3).
 use crane_model::loads::load_model::BoomState;
-use crane_model::structure::modal::{MeshRefinement, THESIS_BASIS};
 use crane_model::multibody::ThesisModel;
 use crane_model::sim::simulation::SimulationOptions;
 use crane_model::CraneData;
 use nalgebra::Vector2;
 
-fn model() -> ThesisModel<f64> {
-    ThesisModel::<f64>::build(&CraneData::coles_mobile_930(), MeshRefinement::THESIS, &THESIS_BASIS).expect("model")
-}
+mod common;
+use common::dynamics::model;
 
 /// F_A·A from the moment balance of all weights about the tipping line, computed
 /// from body positions without any multiplier.

@@ -48,27 +48,9 @@
 use crane_model::loads::load_model::{BoomState, HookLoadModel, LoadTerms, Quadratic};
 use crane_model::{ModelError, Real};
 
-/// Direction of boom motion, from the filtered angle rate.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Direction {
-    /// Luffing up (angle increasing).
-    Up,
-    /// Luffing down (angle decreasing).
-    Down,
-    /// Not moving (|rate| below the threshold).
-    Still,
-}
-
-impl Direction {
-    /// Lower-case name (`up`, `down`, `still`).
-    pub fn as_str(self) -> &'static str {
-        match self {
-            Direction::Up => "up",
-            Direction::Down => "down",
-            Direction::Still => "still",
-        }
-    }
-}
+/// Direction of boom motion, from the filtered angle rate: the crates' one
+/// direction type ([`crane_model::data::profile::Direction`]).
+pub use crane_model::data::profile::Direction;
 
 /// Thresholds of [`DirectionDetector`] (degrees per second, positive).
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -13,41 +13,7 @@ use crate::maneuver_file;
 use std::io::Write;
 use std::path::PathBuf;
 
-/// Ramp shape on the command line.
-#[derive(clap::ValueEnum, Clone, Copy, Debug)]
-pub enum ProfileArg {
-    /// Linear acceleration and deceleration (eq. 3.48).
-    Linear,
-    /// Cycloidal acceleration and deceleration (eq. 3.47).
-    Cycloidal,
-}
-
-/// Direction on the command line.
-#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
-pub enum DirectionArg {
-    /// 40° → 80°.
-    Up,
-    /// 80° → 40°.
-    Down,
-}
-
-/// Initial state on the command line.
-#[derive(clap::ValueEnum, Clone, Copy, Debug)]
-pub enum InitialArg {
-    /// Static deflection projected in the energy norm (the reduced model's equilibrium).
-    Equilibrium,
-    /// The listing's Euclidean least-squares projection.
-    Listing,
-}
-
-/// Rope mode on the command line.
-#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
-pub enum RopeArg {
-    /// Paid out to keep the load 1 m above the ground (thesis assumption vi).
-    Thesis,
-    /// Constant hanging length, the winch braked (SPEC §3).
-    Held,
-}
+pub use crate::choices::{DirectionArg, InitialArg, ProfileArg, RopeArg};
 
 /// The maneuver on the command line, shared by `simulate` and `synth`.
 #[derive(clap::Args, Debug, Clone)]
@@ -146,12 +112,11 @@ pub fn csv_row(s: &Sample<f64>) -> String {
 
 /// The rope the command line asks for, if it asks.
 pub fn rope_choice(args: &ManeuverArgs) -> Result<Option<RopeChoice>> {
-    let name = match (args.rope, args.rope_length_m) {
-        (None, None) => return Ok(None),
-        (Some(RopeArg::Thesis), _) => "thesis",
-        (Some(RopeArg::Held), _) | (None, Some(_)) => "held",
-    };
-    Ok(Some(maneuver_file::rope(Some(name), args.rope_length_m)?))
+    match (args.rope, args.rope_length_m) {
+        (None, None) => Ok(None),
+        (Some(rope), length_m) => Ok(Some(rope.choice(length_m)?)),
+        (None, Some(length_m)) => Ok(Some(RopeArg::Held.choice(Some(length_m))?)),
+    }
 }
 
 /// Resolves a single luffing move (thesis case, thesis flags or --from-deg/--to-deg)
@@ -164,10 +129,7 @@ pub fn maneuver(args: &ManeuverArgs) -> Result<(String, Maneuver)> {
             .map(|(n, m)| (n.to_string(), m))
             .with_context(|| format!("unknown case '{name}'; `crane-sim simulate --list` shows the twelve thesis cases"));
     }
-    let shape = match args.profile {
-        ProfileArg::Linear => RampShape::Linear,
-        ProfileArg::Cycloidal => RampShape::Cycloidal,
-    };
+    let shape = RampShape::from(args.profile);
     if !(args.duration >= 2.0 && args.duration <= 3600.0) {
         bail!("--duration must be in [2, 3600] s, got {}", args.duration);
     }
@@ -180,10 +142,7 @@ pub fn maneuver(args: &ManeuverArgs) -> Result<(String, Maneuver)> {
         ),
         (Some(_), None) => bail!("--from-deg without --to-deg holds the boom still: use it with --lift-off-s or a maneuver file"),
         _ => {
-            let direction = match args.direction {
-                DirectionArg::Up => Direction::Up,
-                DirectionArg::Down => Direction::Down,
-            };
+            let direction = Direction::from(args.direction);
             let title = format!("{} kg, {} s, {:?}, {:?}", args.load_kg, args.duration, shape, direction);
             let m = if thesis_duration && args.ramp_s.is_none() {
                 Maneuver::thesis(args.load_kg, args.duration, shape, direction)
@@ -336,10 +295,7 @@ pub fn run(args: SimulateArgs) -> Result<u8> {
     let mut options = SimulationOptions::for_type::<f64>();
     options.step_s = args.step_ms * 1e-3;
     options.output_every = args.output_every;
-    options.initial = match args.initial {
-        InitialArg::Equilibrium => InitialState::Equilibrium,
-        InitialArg::Listing => InitialState::ListingProjection,
-    };
+    options.initial = InitialState::from(args.initial);
     let started = std::time::Instant::now();
     let (samples, summary) = run_program(&program, &options)?;
     let elapsed = started.elapsed();

@@ -4,6 +4,10 @@
 //!
 //! SI units throughout. The plane of the crane has x horizontal toward the boom tip
 //! and y up; the boom angle θ1 is measured from the horizontal.
+//!
+//! How the boom is meshed is not crane data but a choice of the analysis: it is
+//! [`crate::structure::modal::MeshRefinement`] (the thesis's 12 elements:
+//! `MeshRefinement::THESIS`), given to the modal analysis.
 
 use crate::data::section::OctagonDims;
 
@@ -112,16 +116,6 @@ pub struct ChassisData {
     pub radius_offset_m: f64,
 }
 
-/// How the boom is meshed into beam elements (thesis §4.3, SPEC §3).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct MeshSpec {
-    /// Elements between A0 and G (2 in the thesis), of equal length.
-    pub elements_foot_to_g: usize,
-    /// Elements between G and C (10 in the thesis). All but the last are
-    /// (A0A − A0G)/2 long so that A falls on a node; the last takes the rest.
-    pub elements_g_to_tip: usize,
-}
-
 /// The whole crane description: constant data only (the MuJoCo "model" side).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CraneData {
@@ -131,8 +125,6 @@ pub struct CraneData {
     pub cylinder_foot: Point,
     /// Body 1.
     pub boom: BoomData,
-    /// How body 1 is meshed.
-    pub mesh: MeshSpec,
     /// Body 2: the rod A0–D, the boom's cylinder lug (listing `AL2, R2, RO2`).
     pub lug_rod: RodData,
     /// AD: offset of the cylinder pin D from the boom axis at A (m).
@@ -178,10 +170,6 @@ impl CraneData {
                 density_kg_m3: 5750.0,
                 youngs_modulus_pa: 2.0e11,
                 damping_ratio: 0.02,
-            },
-            mesh: MeshSpec {
-                elements_foot_to_g: 2,
-                elements_g_to_tip: 10,
             },
             lug_rod: RodData {
                 length_m: 5.85,

@@ -8,6 +8,31 @@
 
 use crate::Real;
 
+/// Which way the boom travels: the one direction type of the crates. The
+/// simulator's maneuvers go [`Direction::Up`] or [`Direction::Down`] (a
+/// [`Direction::Still`] maneuver is refused); the limiter detects all three
+/// from the filtered angle rate and picks the cylinder friction by it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Direction {
+    /// Luffing up (angle increasing): from the lower angle to the higher one.
+    Up,
+    /// Luffing down (angle decreasing): from the higher angle to the lower one.
+    Down,
+    /// Not moving.
+    Still,
+}
+
+impl Direction {
+    /// Lower-case name (`up`, `down`, `still`).
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Direction::Up => "up",
+            Direction::Down => "down",
+            Direction::Still => "still",
+        }
+    }
+}
+
 /// The shape of the acceleration and deceleration ramps.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum RampShape {

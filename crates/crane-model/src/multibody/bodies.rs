@@ -3,6 +3,7 @@
 
 use crate::data::crane::CraneData;
 use crate::{ModelError, Real};
+use nalgebra::Vector2;
 
 /// Mass, first moment and inertia of a rigid body about its reference point,
 /// with its centre of mass on the body's x axis.
@@ -17,6 +18,16 @@ pub struct RigidMass<T> {
 }
 
 impl<T: Real> RigidMass<T> {
+    /// The applied and velocity forces on the body's coordinates (eqs. 3.12–3.16):
+    /// gravity `g` and the centrifugal term of the turning axis `axis` (normal
+    /// `normal`) at angular velocity `w`; returns (force on the reference point,
+    /// torque about it).
+    #[inline]
+    pub fn applied_forces(&self, g: Vector2<T>, axis: Vector2<T>, normal: Vector2<T>, w: T) -> (Vector2<T>, T) {
+        let s = self.first_moment_kg_m;
+        (g * self.mass_kg + axis * (s * w * w), s * normal.dot(&g))
+    }
+
     /// A solid round rod of length `l`, radius `r`, referenced at one end.
     pub fn rod(mass_kg: f64, length_m: f64, radius_m: f64) -> Self {
         RigidMass {
@@ -136,6 +147,21 @@ pub struct Pendulum<T> {
 }
 
 impl<T: Real> Pendulum<T> {
+    /// The applied and velocity forces on body 5's coordinates (x, y at C and
+    /// the swing θ5): gravity `g`, the centrifugal term of the swing at rate `w`
+    /// about the rope axis `axis` (normal `normal`), and the terms of the
+    /// changing length L(t); returns (force at C, torque about C).
+    #[inline]
+    pub fn applied_forces(&self, g: Vector2<T>, axis: Vector2<T>, normal: Vector2<T>, w: T) -> (Vector2<T>, T) {
+        let two = T::lit(2.0);
+        let force = g * self.mass_kg
+            + axis * (self.first_moment_kg_m * w * w - self.first_moment_per_m * self.length_accel_m_s2)
+            - normal * (two * self.first_moment_per_m * self.length_rate_m_s * w);
+        let torque = self.first_moment_kg_m * normal.dot(&g)
+            - two * self.inertia_per_m2 * self.length_m * self.length_rate_m_s * w;
+        (force, torque)
+    }
+
     /// Rope of `rope_kg_per_m` and hook load `load_kg` hanging `l` metres.
     pub fn new(
         rope_kg_per_m: T,

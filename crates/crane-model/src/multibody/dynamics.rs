@@ -7,6 +7,8 @@ use crate::multibody::{
     CONSTRAINTS, MAX_COORDS,
 };
 use crate::data::profile::ActuatorMotion;
+use crate::multibody::layout::mode_index;
+use crate::multibody::mechanism::perp;
 use crate::{ModelError, Real};
 use nalgebra::{SMatrix, SVector, Vector2};
 
@@ -91,7 +93,7 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
             acc[i + 2] = b.angular_acceleration;
         }
         for k in 0..M {
-            acc[3 + k] = ev.eta_accel[k];
+            acc[mode_index(k)] = ev.eta_accel[k];
         }
         let i5 = Self::body_index(5);
         let tip =
@@ -158,22 +160,12 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         let act = mech.actuator;
         let unit = self.geometry.motion(ActuatorMotion { extension_m: act.extension_m, rate_m_s: T::one(), accel_m_s2: T::zero() })?;
         let g = Vector2::new(T::zero(), -self.gravity_m_s2);
-        let two = T::lit(2.0);
         let m = &self.modes;
-        let jmat = nalgebra::Matrix2::new(T::zero(), -T::one(), T::one(), T::zero());
         // Body 1 (eqs. 3.1–3.11): rows x1, y1, θ1 of M·ẏ − forces.
         let b1 = &mech.boom;
-        let (w1, al1) = (b1.angular_velocity, b1.angular_acceleration);
-        let d = SMatrix::<T, 2, M>::from_fn(|r, c| m.first_moment_modes[r][c]);
-        let skew = SMatrix::<T, M, M>::from_fn(|r, c| m.skew_modes[r][c]);
-        let first = Vector2::new(m.first_moment_rest[0], m.first_moment_rest[1]) + d * cfg.eta;
-        let coupling = SVector::<T, M>::from_column_slice(&m.inertia_coupling) + cfg.eta;
-        let inertia = m.inertia_rest + two * SVector::<T, M>::from_column_slice(&m.inertia_coupling).dot(&cfg.eta) + cfg.eta.dot(&cfg.eta);
-        let h = SVector::<T, M>::from_column_slice(&m.skew_rest) + skew * cfg.eta;
-        let tj_first = cfg.rot * (jmat * first);
-        let td = cfg.rot * d;
-        let q_r = cfg.rot * first * (w1 * w1) - cfg.rot * (jmat * (d * cfg.eta_rate)) * (two * w1);
-        let q_th = -(two * w1) * coupling.dot(&cfg.eta_rate);
+        let al1 = b1.angular_acceleration;
+        let terms = self.boom_terms(cfg);
+        let (inertia, h, tj_first, td, q_r, q_th) = (terms.inertia, terms.modal.h, terms.tj_first, terms.td, terms.q_r, terms.q_th);
         let r1 = b1.acceleration * m.mass_kg + tj_first * al1 + td * ev.eta_accel - (g * m.mass_kg + q_r);
         let t1 = tj_first.dot(&b1.acceleration) + inertia * al1 + h.dot(&ev.eta_accel) - (tj_first.dot(&g) + q_th);
         let mut power = unit.boom.velocity.dot(&r1) + unit.boom.angular_velocity * t1;
@@ -181,22 +173,20 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         let rigid = [(&mech.lug, &unit.lug, self.lug), (&mech.rod, &unit.rod, self.rod), (&mech.cylinder, &unit.cylinder, cfg.cylinder)];
         for (b, u, mass) in rigid {
             let (e, n) = (b.axis, b.normal());
-            let (w, al, s) = (b.angular_velocity, b.angular_acceleration, mass.first_moment_kg_m);
-            let fr = b.acceleration * mass.mass_kg + n * (s * al) - (g * mass.mass_kg + e * (s * w * w));
-            let ft = s * n.dot(&b.acceleration) + mass.inertia_kg_m2 * al - s * n.dot(&g);
+            let (al, s) = (b.angular_acceleration, mass.first_moment_kg_m);
+            let (applied, torque) = mass.applied_forces(g, e, n, b.angular_velocity);
+            let fr = b.acceleration * mass.mass_kg + n * (s * al) - applied;
+            let ft = s * n.dot(&b.acceleration) + mass.inertia_kg_m2 * al - torque;
             power += u.velocity.dot(&fr) + u.angular_velocity * ft;
         }
         // Body 5 at C: moves with the tip (θ5 held), so only its translation rows.
         let p = &cfg.pendulum;
         let e5 = cfg.swing_axis;
-        let n5 = Vector2::new(-e5.y, e5.x);
-        let w5 = cfg.swing_rate;
+        let n5 = perp(e5);
         let acc5 = ev.equations.tip_accel_known + cfg.rot * (cfg.tip_modes * ev.eta_accel);
-        let f5 = g * p.mass_kg
-            + e5 * (p.first_moment_kg_m * w5 * w5 - p.first_moment_per_m * p.length_accel_m_s2)
-            - n5 * (two * p.first_moment_per_m * p.length_rate_m_s * w5);
+        let (f5, _) = p.applied_forces(g, e5, n5, cfg.swing_rate);
         let r5 = acc5 * p.mass_kg + n5 * (p.first_moment_kg_m * ev.swing_accel) - f5;
-        let v5 = unit.boom.velocity + cfg.rot * (jmat * cfg.tip_body) * unit.boom.angular_velocity;
+        let v5 = unit.boom.velocity + cfg.rot * perp(cfg.tip_body) * unit.boom.angular_velocity;
         power += v5.dot(&r5);
         if !power.is_finite() {
             return Err(ModelError::NotFinite("piston force"));

@@ -36,7 +36,7 @@ impl<T: Real> BodyMotion<T> {
     /// Unit vector normal to the axis, (−sin θ, cos θ).
     #[inline]
     pub fn normal(&self) -> Vector2<T> {
-        Vector2::new(-self.axis.y, self.axis.x)
+        perp(self.axis)
     }
 }
 
@@ -65,6 +65,14 @@ pub struct MechanismGeometry<T: Real> {
 #[inline]
 pub fn unit<T: Real>(a: T) -> Vector2<T> {
     Vector2::new(a.cos(), a.sin())
+}
+
+/// J·v, with J = [0 −1; 1 0]: `v` turned by +90° (the derivative of a rotation
+/// matrix T(θ) is T·J, so J appears in every velocity and Coriolis term). The one
+/// spelling of J in the model.
+#[inline]
+pub fn perp<T: Real>(v: Vector2<T>) -> Vector2<T> {
+    Vector2::new(-v.y, v.x)
 }
 
 /// Unit vector at angle `a` + 90°.
@@ -141,7 +149,7 @@ impl<T: Real> MechanismGeometry<T> {
         let th2 = self.base_angle_rad - ratio.acos();
         let (bc, bs) = (self.base_axis.x, self.base_axis.y);
         let e2 = Vector2::new(bc * ratio + bs * sin_alpha, bs * ratio - bc * sin_alpha);
-        let n2 = Vector2::new(-e2.y, e2.x);
+        let n2 = perp(e2);
         // s·ṡ = L2·(d·n2)·θ̇2, differentiated once more for θ̈2.
         let g = l2 * d.dot(&n2);
         if !(g.abs() > T::default_epsilon()) {
@@ -156,7 +164,7 @@ impl<T: Real> MechanismGeometry<T> {
         let axis = pd - self.cylinder_foot;
         let th4 = axis.y.atan2(axis.x);
         let e4 = axis / s;
-        let n4 = Vector2::new(-e4.y, e4.x);
+        let n4 = perp(e4);
         let w4 = vd.dot(&n4) / s;
         let al4 = (ad.dot(&n4) - T::lit(2.0) * sd * w4) / s;
         let a = act.extension_m;

@@ -13,6 +13,8 @@
 //! ([`crate::multibody::dynamics`]) → reactions.
 
 pub mod bodies;
+mod boom;
+pub mod layout;
 pub mod dynamics;
 pub mod mechanism;
 pub mod rope;
@@ -21,7 +23,9 @@ pub mod statics;
 use crate::multibody::bodies::{CylinderMass, Pendulum, RigidMass};
 use crate::data::crane::CraneData;
 use crate::structure::dense::Square;
-use crate::multibody::mechanism::{unit, MechanismGeometry, MechanismMotion};
+use crate::multibody::boom::{subtract_elastic, BoomModal};
+use crate::multibody::layout::{coordinate_count, mode_index};
+use crate::multibody::mechanism::{perp, unit, MechanismGeometry, MechanismMotion};
 use crate::structure::modal::{BoomModes, MeshRefinement, ModalAnalysis};
 use crate::data::profile::ActuatorMotion;
 use crate::multibody::rope::{RopeChoice, RopeMode};
@@ -30,8 +34,8 @@ use nalgebra::{Matrix2, SMatrix, SVector, Vector2};
 
 /// Number of constraints (thesis §3.3.1, one dependent equation dropped).
 pub const CONSTRAINTS: usize = 14;
-/// Most generalized coordinates (8 modes + 15).
-pub const MAX_COORDS: usize = crate::structure::modal::MAX_MODES + 15;
+/// Most generalized coordinates (8 modes + 15, [`layout`]).
+pub const MAX_COORDS: usize = coordinate_count(crate::structure::modal::MAX_MODES);
 
 /// The crane model: constant data only (thesis's time-invariant matrices, §2.6).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -249,37 +253,23 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         let b1 = &cfg.mech.boom;
         let (w1, al1) = (b1.angular_velocity, b1.angular_acceleration);
         let two = T::lit(2.0);
-        let d = SMatrix::<T, 2, M>::from_fn(|r, c| m.first_moment_modes[r][c]);
-        let skew = SMatrix::<T, M, M>::from_fn(|r, c| m.skew_modes[r][c]);
-        let coupling = SVector::<T, M>::from_column_slice(&m.inertia_coupling) + cfg.eta;
-        // h = χᵀ·AA·q: the rotation–deformation coupling M_θη (eq. 3.6).
-        let h = SVector::<T, M>::from_column_slice(&m.skew_rest) + skew * cfg.eta;
+        let BoomModal { d, skew, coupling, h } = BoomModal::new(m, &cfg.eta);
         // Body 1, η rows: gravity (eq. 2.51), velocity terms Q_η (eq. 3.11), stiffness
         // (eq. 2.52), damping (eq. 2.53), minus the inertia of the prescribed rotation.
         let mut f_eta = d.transpose() * (cfg.rot.transpose() * g) + coupling * (w1 * w1)
             - skew * cfg.eta_rate * (two * w1)
             - h * al1;
-        for k in 0..M {
-            let wk = m.omega_rad_s[k];
-            f_eta[k] -= wk * wk * cfg.eta[k] + m.damping[k] * cfg.eta_rate[k];
-        }
+        subtract_elastic(m, &mut f_eta, &cfg.eta, &cfg.eta_rate);
         // Body 5 through the tip C: R̈5 = c5 + T·χ_C·η̈.
         let p = &cfg.pendulum;
         let e5 = cfg.swing_axis;
-        let n5 = Vector2::new(-e5.y, e5.x);
+        let n5 = perp(e5);
         let w5 = cfg.swing_rate;
-        let tj_tip = cfg.rot * Vector2::new(-cfg.tip_body.y, cfg.tip_body.x);
+        let tj_tip = cfg.rot * perp(cfg.tip_body);
         let tip_modes_world = cfg.rot * cfg.tip_modes;
         let c5 = tj_tip * al1 - cfg.rot * cfg.tip_body * (w1 * w1)
-            + (cfg.rot
-                * (Matrix2::new(T::zero(), -T::one(), T::one(), T::zero())
-                    * (cfg.tip_modes * cfg.eta_rate)))
-                * (two * w1);
-        let f5_r = g * p.mass_kg
-            + e5 * (p.first_moment_kg_m * w5 * w5 - p.first_moment_per_m * p.length_accel_m_s2)
-            - n5 * (two * p.first_moment_per_m * p.length_rate_m_s * w5);
-        let f5_th = p.first_moment_kg_m * n5.dot(&g)
-            - two * p.inertia_per_m2 * p.length_m * p.length_rate_m_s * w5;
+            + (cfg.rot * perp(cfg.tip_modes * cfg.eta_rate)) * (two * w1);
+        let (f5_r, f5_th) = p.applied_forces(g, e5, n5, w5);
         let r5 = f5_r - c5 * p.mass_kg;
         f_eta += tip_modes_world.transpose() * r5;
         let f_swing = f5_th - p.first_moment_kg_m * n5.dot(&c5);
@@ -302,7 +292,7 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
     /// Q + f + f_s + f_d, constraint Jacobian B and the right side γ = −Ḃy + ġ of
     /// B·ẏ = γ (eqs. 2.59, 2.67, 2.68), over all M + 15 coordinates.
     pub fn full_system(&self, cfg: &Configuration<T, M>) -> Result<FullSystem<T>, ModelError> {
-        let n = M + 15;
+        let n = Self::COORDS;
         let mut sys = FullSystem {
             n,
             position: [T::zero(); MAX_COORDS],
@@ -317,61 +307,50 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         let two = T::lit(2.0);
         let m = &self.modes;
         let mech = &cfg.mech;
-        let jmat = Matrix2::new(T::zero(), -T::one(), T::one(), T::zero());
         // ---- Body 1 (flexible): eqs. 3.1–3.11.
         let b1 = &mech.boom;
         let (th1, w1) = (b1.angle, b1.angular_velocity);
-        let d = SMatrix::<T, 2, M>::from_fn(|r, c| m.first_moment_modes[r][c]);
-        let skew = SMatrix::<T, M, M>::from_fn(|r, c| m.skew_modes[r][c]);
-        let first = Vector2::new(m.first_moment_rest[0], m.first_moment_rest[1]) + d * cfg.eta;
-        let coupling_rest = SVector::<T, M>::from_column_slice(&m.inertia_coupling);
-        let inertia = m.inertia_rest + two * coupling_rest.dot(&cfg.eta) + cfg.eta.dot(&cfg.eta);
-        let h = SVector::<T, M>::from_column_slice(&m.skew_rest) + skew * cfg.eta;
-        let tj_first = cfg.rot * (jmat * first);
-        let td = cfg.rot * d;
+        let terms = self.boom_terms(cfg);
+        let BoomModal { d, skew, coupling, h } = terms.modal;
+        let (inertia, tj_first, td) = (terms.inertia, terms.tj_first, terms.td);
         sys.set_body(0, b1.position, th1, b1.velocity, w1);
         for k in 0..M {
-            sys.position[3 + k] = cfg.eta[k];
-            sys.velocity[3 + k] = cfg.eta_rate[k];
+            sys.position[mode_index(k)] = cfg.eta[k];
+            sys.velocity[mode_index(k)] = cfg.eta_rate[k];
         }
         for i in 0..2 {
             sys.mass.set(i, i, m.mass_kg);
             sys.mass.set(i, 2, tj_first[i]);
             sys.mass.set(2, i, tj_first[i]);
             for k in 0..M {
-                sys.mass.set(i, 3 + k, td[(i, k)]);
-                sys.mass.set(3 + k, i, td[(i, k)]);
+                sys.mass.set(i, mode_index(k), td[(i, k)]);
+                sys.mass.set(mode_index(k), i, td[(i, k)]);
             }
         }
         sys.mass.set(2, 2, inertia);
         for k in 0..M {
-            sys.mass.set(2, 3 + k, h[k]);
-            sys.mass.set(3 + k, 2, h[k]);
-            sys.mass.set(3 + k, 3 + k, T::one());
+            sys.mass.set(2, mode_index(k), h[k]);
+            sys.mass.set(mode_index(k), 2, h[k]);
+            sys.mass.set(mode_index(k), mode_index(k), T::one());
         }
-        let q_r = cfg.rot * first * (w1 * w1) - cfg.rot * (jmat * (d * cfg.eta_rate)) * (two * w1);
-        let q_th = -(two * w1) * (coupling_rest + cfg.eta).dot(&cfg.eta_rate);
-        let mut q_eta = (coupling_rest + cfg.eta) * (w1 * w1) - skew * cfg.eta_rate * (two * w1);
-        for k in 0..M {
-            let wk = m.omega_rad_s[k];
-            q_eta[k] -= wk * wk * cfg.eta[k] + m.damping[k] * cfg.eta_rate[k];
-        }
-        let f_r = g * m.mass_kg + q_r;
+        let mut q_eta = coupling * (w1 * w1) - skew * cfg.eta_rate * (two * w1);
+        subtract_elastic(m, &mut q_eta, &cfg.eta, &cfg.eta_rate);
+        let f_r = g * m.mass_kg + terms.q_r;
         let f_eta = q_eta + d.transpose() * (cfg.rot.transpose() * g);
         sys.force[0] = f_r.x;
         sys.force[1] = f_r.y;
-        sys.force[2] = tj_first.dot(&g) + q_th;
+        sys.force[2] = tj_first.dot(&g) + terms.q_th;
         for k in 0..M {
-            sys.force[3 + k] = f_eta[k];
+            sys.force[mode_index(k)] = f_eta[k];
         }
         // ---- Rigid bodies 2–4 (eqs. 3.12–3.16).
         let rigid = [
-            (1usize, &mech.lug, self.lug),
-            (2, &mech.rod, self.rod),
-            (3, &mech.cylinder, cfg.cylinder),
+            (2usize, &mech.lug, self.lug),
+            (3, &mech.rod, self.rod),
+            (4, &mech.cylinder, cfg.cylinder),
         ];
         for (body, motion, mass) in rigid {
-            let base = 3 + M + 3 * (body - 1);
+            let base = Self::body_index(body);
             sys.set_body(
                 base,
                 motion.position,
@@ -386,26 +365,22 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
                 nrm * mass.first_moment_kg_m,
                 mass.inertia_kg_m2,
             );
-            let w = motion.angular_velocity;
-            let f = g * mass.mass_kg + e * (mass.first_moment_kg_m * w * w);
+            let (f, torque) = mass.applied_forces(g, e, nrm, motion.angular_velocity);
             sys.force[base] = f.x;
             sys.force[base + 1] = f.y;
-            sys.force[base + 2] = mass.first_moment_kg_m * nrm.dot(&g);
+            sys.force[base + 2] = torque;
         }
         // ---- Body 5: rope and load, length L(t) (see `reduced_equations`).
-        let base5 = 3 + M + 9;
+        let base5 = Self::body_index(5);
         let p = &cfg.pendulum;
         let (th5, w5) = (cfg.swing_rad, cfg.swing_rate);
-        let (e5, n5) = (cfg.swing_axis, Vector2::new(-cfg.swing_axis.y, cfg.swing_axis.x));
+        let (e5, n5) = (cfg.swing_axis, perp(cfg.swing_axis));
         sys.set_body(base5, cfg.tip_position, th5, cfg.tip_velocity, w5);
         sys.add_rigid_mass(base5, p.mass_kg, n5 * p.first_moment_kg_m, p.inertia_kg_m2);
-        let f5 = g * p.mass_kg
-            + e5 * (p.first_moment_kg_m * w5 * w5 - p.first_moment_per_m * p.length_accel_m_s2)
-            - n5 * (two * p.first_moment_per_m * p.length_rate_m_s * w5);
+        let (f5, torque5) = p.applied_forces(g, e5, n5, w5);
         sys.force[base5] = f5.x;
         sys.force[base5 + 1] = f5.y;
-        sys.force[base5 + 2] = p.first_moment_kg_m * n5.dot(&g)
-            - two * p.inertia_per_m2 * p.length_m * p.length_rate_m_s * w5;
+        sys.force[base5 + 2] = torque5;
         self.constraints(cfg, &mut sys);
         Ok(sys)
     }
@@ -414,7 +389,7 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
     /// rows of B, the acceleration right side γ and the position residual Φ.
     fn constraints(&self, cfg: &Configuration<T, M>, sys: &mut FullSystem<T>) {
         let two = T::lit(2.0);
-        let (b2, b3, b4, b5) = (3 + M, 3 + M + 3, 3 + M + 6, 3 + M + 9);
+        let (b2, b3, b4, b5) = (Self::body_index(2), Self::body_index(3), Self::body_index(4), Self::body_index(5));
         let x = |s: &FullSystem<T>, i: usize| Vector2::new(s.position[i], s.position[i + 1]);
         let v = |s: &FullSystem<T>, i: usize| Vector2::new(s.velocity[i], s.velocity[i + 1]);
         let a0 = self.geometry.boom_foot;
@@ -436,7 +411,7 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         sys.jacobian[6][2] = T::one();
         let mut lug_rot = T::zero();
         for k in 0..M {
-            sys.jacobian[6][3 + k] = self.modes.lug_rotation_modes[k];
+            sys.jacobian[6][mode_index(k)] = self.modes.lug_rotation_modes[k];
             lug_rot += self.modes.lug_rotation_modes[k] * cfg.eta[k];
         }
         sys.jacobian[6][b2 + 2] = -T::one();
@@ -485,18 +460,17 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         sys.residual[10] = th3 - th4;
         // 12–13: revolute at C: R1 + T1·(x_C + χ_C·η) − R5 = 0 (eq. 3.44).
         let w1 = sys.velocity[2];
-        let jmat = Matrix2::new(T::zero(), -T::one(), T::one(), T::zero());
-        let tj_tip = cfg.rot * (jmat * cfg.tip_body);
+        let tj_tip = cfg.rot * perp(cfg.tip_body);
         let t_modes = cfg.rot * cfg.tip_modes;
         let gam_c = cfg.rot * cfg.tip_body * (w1 * w1)
-            - cfg.rot * (jmat * (cfg.tip_modes * cfg.eta_rate)) * (two * w1);
+            - cfg.rot * perp(cfg.tip_modes * cfg.eta_rate) * (two * w1);
         let phi_c = x(sys, 0) + cfg.rot * cfg.tip_body - x(sys, b5);
         for i in 0..2 {
             let row = 11 + i;
             sys.jacobian[row][i] = T::one();
             sys.jacobian[row][2] = tj_tip[i];
             for k in 0..M {
-                sys.jacobian[row][3 + k] = t_modes[(i, k)];
+                sys.jacobian[row][mode_index(k)] = t_modes[(i, k)];
             }
             sys.jacobian[row][b5 + i] = -T::one();
             sys.gamma[row] = gam_c[i];
@@ -504,22 +478,22 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         }
     }
 
-    /// Index of the first coordinate of body `k` (1..=5).
+    /// Number of generalized coordinates, M + 15 ([`layout`]).
+    pub const COORDS: usize = coordinate_count(M);
+
+    /// Index of the first coordinate of body `k` (1..=5, [`layout`]).
     pub const fn body_index(k: usize) -> usize {
-        if k <= 1 {
-            0
-        } else {
-            3 + M + 3 * (k - 2)
-        }
+        layout::body_index(k, M)
     }
 
     /// The dependent coordinates (everything but the modes and the swing angle θ5).
     pub fn dependent_indices() -> [usize; CONSTRAINTS] {
-        let (b2, b3, b4, b5) = (3 + M, 3 + M + 3, 3 + M + 6, 3 + M + 9);
+        let b1 = Self::body_index(1);
+        let (b2, b3, b4, b5) = (Self::body_index(2), Self::body_index(3), Self::body_index(4), Self::body_index(5));
         [
-            0,
-            1,
-            2,
+            b1,
+            b1 + 1,
+            b1 + 2,
             b2,
             b2 + 1,
             b2 + 2,

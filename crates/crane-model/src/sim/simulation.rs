@@ -9,14 +9,9 @@ use crate::data::profile::{ActuatorMotion, RampShape, StrokeProfile};
 use crate::multibody::rope::RopeChoice;
 use crate::{ModelError, Real};
 
-/// Which way the boom moves.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Direction {
-    /// From the lower angle to the higher one.
-    Up,
-    /// From the higher angle to the lower one.
-    Down,
-}
+/// Which way the boom moves (the crates' one direction type, see
+/// [`crate::data::profile::Direction`]).
+pub use crate::data::profile::Direction;
 
 /// How the simulation starts (see [`CraneModel::equilibrium_state`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -70,6 +65,9 @@ impl Maneuver {
         } else {
             return Err(ModelError::InvalidParameter("duration must be 30 or 10 s"));
         };
+        if direction == Direction::Still {
+            return Err(ModelError::InvalidParameter("a thesis maneuver moves up or down"));
+        }
         if !(load_kg >= 0.0 && load_kg.is_finite()) {
             return Err(ModelError::InvalidParameter(
                 "hook load must be a finite number ≥ 0 kg",
@@ -140,6 +138,8 @@ impl Maneuver {
         match self.direction {
             Direction::Up => (self.low_angle_deg, self.high_angle_deg),
             Direction::Down => (self.high_angle_deg, self.low_angle_deg),
+            // Not a move: the program's luff to the same angle is refused.
+            Direction::Still => (self.low_angle_deg, self.low_angle_deg),
         }
     }
 

@@ -277,26 +277,10 @@ impl<T: Real> ModalAnalysis<T> {
         let me0 = self.mass.mul_vec(&e0);
         let ge0 = self.skew.mul_vec(&e0);
         let mut out = BoomModes::<T, M> {
-            kinds: [ModeKind::Mixed; M],
-            omega_rad_s: [T::zero(); M],
-            damping: [T::zero(); M],
-            rayleigh_alpha: T::zero(),
-            rayleigh_beta: T::zero(),
             mass_kg: self.mesh.mass_kg(),
-            first_moment_rest: [T::zero(); 2],
-            first_moment_modes: [[T::zero(); M]; 2],
-            inertia_rest: T::zero(),
-            inertia_coupling: [T::zero(); M],
-            skew_rest: [T::zero(); M],
-            skew_modes: [[T::zero(); M]; M],
             length_m: self.mesh.node_x(self.mesh.n_nodes() - 1),
             lug_x_m: self.mesh.node_x(self.lug_node),
-            tip_modes: [[T::zero(); M]; 2],
-            lug_rotation_modes: [T::zero(); M],
-            deflection_nodes: [0; 3],
-            deflection_modes: [[T::zero(); M]; 3],
-            static_gravity: [[T::zero(); 2]; M],
-            static_tip: [[T::zero(); 2]; M],
+            ..BoomModes::zeroed()
         };
         let tip = self.mesh.n_nodes() - 1;
         for k in 0..M {
@@ -512,149 +496,193 @@ pub fn boom_mesh<T: Real>(crane: &CraneData, r: MeshRefinement) -> Result<BeamMe
     BeamMesh::new(&elements[..count])
 }
 
-/// The time-invariant modal data of the boom for `M` retained modes: everything
-/// the per-step dynamics need, nothing more (thesis §2.6). Mode shapes χ are
-/// mass-normalized (χᵀMχ = I) so M_ηη = I (eq. 3.8) and χᵀKχ = diag(ω²).
-/// Arrays, not nalgebra types, so the value can be written out as constant data.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct BoomModes<T, const M: usize> {
-    /// Kind of each retained mode.
-    pub kinds: [ModeKind; M],
-    /// Natural frequency ω of each retained mode (rad/s).
-    pub omega_rad_s: [T; M],
-    /// Modal damping χᵀCχ = α + β·ω² (1/s), Rayleigh (eqs. 2.53–2.56).
-    pub damping: [T; M],
-    /// Rayleigh α (1/s).
-    pub rayleigh_alpha: T,
-    /// Rayleigh β (s).
-    pub rayleigh_beta: T,
-    /// Boom mass m (kg, eq. 3.1).
-    pub mass_kg: T,
-    /// A·e0: first moment of mass of the undeformed boom in its body frame (kg·m).
-    pub first_moment_rest: [T; 2],
-    /// A·χ (eq. 3.4): first moment per unit modal coordinate, rows x and y (kg·m).
-    pub first_moment_modes: [[T; M]; 2],
-    /// e0ᵀ·M_αα·e0 (eq. 3.5): rotary inertia of the undeformed boom about A0 (kg·m²).
-    pub inertia_rest: T,
-    /// χᵀ·M_αα·e0 (eqs. 3.5, 3.10, 3.11).
-    pub inertia_coupling: [T; M],
-    /// χᵀ·AA·e0 (eq. 3.6 with AA = ∫ρφᵀJφ).
-    pub skew_rest: [T; M],
-    /// χᵀ·AA·χ (eqs. 3.6, 3.11), skew-symmetric.
-    pub skew_modes: [[T; M]; M],
-    /// Boom length A0C (m).
-    pub length_m: T,
-    /// Distance A0A (m).
-    pub lug_x_m: T,
-    /// Displacement of the tip C per unit modal coordinate, rows x and y (body frame).
-    pub tip_modes: [[T; M]; 2],
-    /// Rotation at A per unit modal coordinate (ψ_A·χ, eq. 3.31): zero with the thesis's BCs.
-    pub lug_rotation_modes: [T; M],
-    /// The nodes (1-based, thesis numbering on its mesh) whose deflection is reported.
-    pub deflection_nodes: [usize; 3],
-    /// Transverse displacement of those nodes per unit modal coordinate.
-    pub deflection_modes: [[T; M]; 3],
-    /// Least-squares modal coordinates of the static deflection per unit body-frame
-    /// gravity (columns x, y in m/s²): the thesis's initial state, part 1.
-    pub static_gravity: [[T; 2]; M],
-    /// Least-squares modal coordinates of the static deflection per unit tip force
-    /// (columns x, y in N, body frame): the thesis's initial state, part 2.
-    pub static_tip: [[T; 2]; M],
-}
+/// Per-kind operations of [`BoomModes`]' fields, picked by the field list in
+/// `boom_modes!`: a conversion between float types, a zero, and the f32 source
+/// text of a value.
+mod field {
+    use super::ModeKind;
+    use crate::Real;
+    use core::fmt::{Result, Write};
 
-impl<T: Real, const M: usize> BoomModes<T, M> {
-    /// Writes this value as Rust source of a `const` named `name` of type
-    /// `BoomModes<f32, M>`, every number as the shortest f32 literal that reads back
-    /// to the same bits: how the controller gets its modes without FE or eigen work.
-    pub fn write_f32_const(&self, name: &str, w: &mut impl core::fmt::Write) -> core::fmt::Result {
-        let m = self.cast::<f32>();
-        let arr = |w: &mut dyn core::fmt::Write, a: &[f32]| -> core::fmt::Result {
-            w.write_str("[")?;
-            for (i, x) in a.iter().enumerate() {
-                if i > 0 {
-                    w.write_str(", ")?;
-                }
-                write!(w, "{x:?}")?;
-            }
-            w.write_str("]")
-        };
-        writeln!(w, "pub const {name}: BoomModes<f32, {M}> = BoomModes {{")?;
-        write!(w, "    kinds: [")?;
-        for k in m.kinds.iter() {
-            write!(w, "ModeKind::{k:?}, ")?;
-        }
-        writeln!(w, "],")?;
-        let fields1: [(&str, &[f32; M]); 5] = [
-            ("omega_rad_s", &m.omega_rad_s),
-            ("damping", &m.damping),
-            ("inertia_coupling", &m.inertia_coupling),
-            ("skew_rest", &m.skew_rest),
-            ("lug_rotation_modes", &m.lug_rotation_modes),
-        ];
-        for (n, a) in fields1 {
-            write!(w, "    {n}: ")?;
-            arr(w, a)?;
-            writeln!(w, ",")?;
-        }
-        for (n, x) in [("rayleigh_alpha", m.rayleigh_alpha), ("rayleigh_beta", m.rayleigh_beta), ("mass_kg", m.mass_kg), ("inertia_rest", m.inertia_rest), ("length_m", m.length_m), ("lug_x_m", m.lug_x_m)] {
-            writeln!(w, "    {n}: {x:?},")?;
-        }
-        write!(w, "    first_moment_rest: ")?;
-        arr(w, &m.first_moment_rest)?;
-        writeln!(w, ",")?;
-        writeln!(w, "    deflection_nodes: {:?},", m.deflection_nodes)?;
-        let rows = |w: &mut dyn core::fmt::Write, n: &str, rows: &[&[f32]]| -> core::fmt::Result {
-            write!(w, "    {n}: [")?;
-            for r in rows {
-                arr(w, r)?;
-                w.write_str(", ")?;
-            }
-            writeln!(w, "],")
-        };
-        rows(w, "first_moment_modes", &[&m.first_moment_modes[0], &m.first_moment_modes[1]])?;
-        rows(w, "tip_modes", &[&m.tip_modes[0], &m.tip_modes[1]])?;
-        let skew: [&[f32]; M] = core::array::from_fn(|i| &m.skew_modes[i][..]);
-        rows(w, "skew_modes", &skew)?;
-        rows(w, "deflection_modes", &[&m.deflection_modes[0], &m.deflection_modes[1], &m.deflection_modes[2]])?;
-        let sg: [&[f32]; M] = core::array::from_fn(|i| &m.static_gravity[i][..]);
-        rows(w, "static_gravity", &sg)?;
-        let st: [&[f32]; M] = core::array::from_fn(|i| &m.static_tip[i][..]);
-        rows(w, "static_tip", &st)?;
-        writeln!(w, "}};")
+    /// The shortest f32 literal that reads back to the same bits.
+    fn number(w: &mut dyn Write, x: f32) -> Result {
+        write!(w, "{x:?}")
     }
 
-    /// Converts to another float type (f64 analysis → f32 controller data).
-    pub fn cast<U: Real>(&self) -> BoomModes<U, M> {
-        let c = |x: T| U::lit(x.to_f64());
-        let c1 = |a: &[T; M]| -> [U; M] { core::array::from_fn(|i| c(a[i])) };
-        BoomModes {
-            kinds: self.kinds,
-            omega_rad_s: c1(&self.omega_rad_s),
-            damping: c1(&self.damping),
-            rayleigh_alpha: c(self.rayleigh_alpha),
-            rayleigh_beta: c(self.rayleigh_beta),
-            mass_kg: c(self.mass_kg),
-            first_moment_rest: [c(self.first_moment_rest[0]), c(self.first_moment_rest[1])],
-            first_moment_modes: [
-                c1(&self.first_moment_modes[0]),
-                c1(&self.first_moment_modes[1]),
-            ],
-            inertia_rest: c(self.inertia_rest),
-            inertia_coupling: c1(&self.inertia_coupling),
-            skew_rest: c1(&self.skew_rest),
-            skew_modes: core::array::from_fn(|i| c1(&self.skew_modes[i])),
-            length_m: c(self.length_m),
-            lug_x_m: c(self.lug_x_m),
-            tip_modes: [c1(&self.tip_modes[0]), c1(&self.tip_modes[1])],
-            lug_rotation_modes: c1(&self.lug_rotation_modes),
-            deflection_nodes: self.deflection_nodes,
-            deflection_modes: core::array::from_fn(|i| c1(&self.deflection_modes[i])),
-            static_gravity: core::array::from_fn(|i| {
-                [c(self.static_gravity[i][0]), c(self.static_gravity[i][1])]
-            }),
-            static_tip: core::array::from_fn(|i| {
-                [c(self.static_tip[i][0]), c(self.static_tip[i][1])]
-            }),
+    fn list(w: &mut dyn Write, a: &[f32]) -> Result {
+        w.write_str("[")?;
+        for (i, x) in a.iter().enumerate() {
+            if i > 0 {
+                w.write_str(", ")?;
+            }
+            number(w, *x)?;
         }
+        w.write_str("]")
+    }
+
+    pub mod scalar {
+        use super::*;
+        pub fn cast<T: Real, U: Real>(x: &T) -> U {
+            U::lit(x.to_f64())
+        }
+        pub fn zero<T: Real>() -> T {
+            T::zero()
+        }
+        pub fn write(w: &mut dyn Write, x: &f32) -> Result {
+            number(w, *x)
+        }
+    }
+
+    pub mod array {
+        use super::*;
+        pub fn cast<T: Real, U: Real, const N: usize>(a: &[T; N]) -> [U; N] {
+            core::array::from_fn(|i| scalar::cast(&a[i]))
+        }
+        pub fn zero<T: Real, const N: usize>() -> [T; N] {
+            [T::zero(); N]
+        }
+        pub fn write<const N: usize>(w: &mut dyn Write, a: &[f32; N]) -> Result {
+            list(w, a)
+        }
+    }
+
+    pub mod matrix {
+        use super::*;
+        pub fn cast<T: Real, U: Real, const R: usize, const C: usize>(a: &[[T; C]; R]) -> [[U; C]; R] {
+            core::array::from_fn(|i| array::cast(&a[i]))
+        }
+        pub fn zero<T: Real, const R: usize, const C: usize>() -> [[T; C]; R] {
+            [[T::zero(); C]; R]
+        }
+        pub fn write<const R: usize, const C: usize>(w: &mut dyn Write, a: &[[f32; C]; R]) -> Result {
+            w.write_str("[")?;
+            for row in a {
+                list(w, row)?;
+                w.write_str(", ")?;
+            }
+            w.write_str("]")
+        }
+    }
+
+    pub mod kinds {
+        use super::*;
+        pub fn cast<const N: usize>(a: &[ModeKind; N]) -> [ModeKind; N] {
+            *a
+        }
+        pub fn zero<const N: usize>() -> [ModeKind; N] {
+            [ModeKind::Mixed; N]
+        }
+        pub fn write<const N: usize>(w: &mut dyn Write, a: &[ModeKind; N]) -> Result {
+            w.write_str("[")?;
+            for k in a {
+                write!(w, "ModeKind::{k:?}, ")?;
+            }
+            w.write_str("]")
+        }
+    }
+
+    pub mod copy {
+        use super::*;
+        pub fn cast<const N: usize>(a: &[usize; N]) -> [usize; N] {
+            *a
+        }
+        pub fn zero<const N: usize>() -> [usize; N] {
+            [0; N]
+        }
+        pub fn write<const N: usize>(w: &mut dyn Write, a: &[usize; N]) -> Result {
+            write!(w, "{a:?}")
+        }
+    }
+}
+
+/// Defines [`BoomModes`] from one field list: the struct, its conversion
+/// between float types, its zero and its writer as Rust source all follow the
+/// list, so a field added to it cannot be forgotten by one of them.
+macro_rules! boom_modes {
+    ($(#[$meta:meta])* pub struct BoomModes { $( $(#[doc = $doc:literal])* $name:ident : $ty:ty => $kind:ident, )* }) => {
+        $(#[$meta])*
+        pub struct BoomModes<T, const M: usize> {
+            $( $(#[doc = $doc])* pub $name: $ty, )*
+        }
+
+        impl<T: Real, const M: usize> BoomModes<T, M> {
+            /// Converts to another float type (f64 analysis → f32 controller data).
+            pub fn cast<U: Real>(&self) -> BoomModes<U, M> {
+                BoomModes { $( $name: field::$kind::cast(&self.$name), )* }
+            }
+
+            /// Every field zero (modes of kind [`ModeKind::Mixed`]): the start of
+            /// the reduction, which fills them in.
+            fn zeroed() -> Self {
+                BoomModes { $( $name: field::$kind::zero(), )* }
+            }
+
+            /// Writes this value as Rust source of a `const` named `name` of type
+            /// `BoomModes<f32, M>`, every number as the shortest f32 literal that
+            /// reads back to the same bits: how the controller gets its modes
+            /// without FE or eigen work.
+            pub fn write_f32_const(&self, name: &str, w: &mut impl core::fmt::Write) -> core::fmt::Result {
+                let m = self.cast::<f32>();
+                writeln!(w, "pub const {name}: BoomModes<f32, {M}> = BoomModes {{")?;
+                $(
+                    write!(w, "    {}: ", stringify!($name))?;
+                    field::$kind::write(w, &m.$name)?;
+                    writeln!(w, ",")?;
+                )*
+                writeln!(w, "}};")
+            }
+        }
+    };
+}
+
+boom_modes! {
+    /// The time-invariant modal data of the boom for `M` retained modes: everything
+    /// the per-step dynamics need, nothing more (thesis §2.6). Mode shapes χ are
+    /// mass-normalized (χᵀMχ = I) so M_ηη = I (eq. 3.8) and χᵀKχ = diag(ω²).
+    /// Arrays, not nalgebra types, so the value can be written out as constant data.
+    #[derive(Debug, Clone, Copy, PartialEq)]
+    pub struct BoomModes {
+        /// Kind of each retained mode.
+        kinds: [ModeKind; M] => kinds,
+        /// Natural frequency ω of each retained mode (rad/s).
+        omega_rad_s: [T; M] => array,
+        /// Modal damping χᵀCχ = α + β·ω² (1/s), Rayleigh (eqs. 2.53–2.56).
+        damping: [T; M] => array,
+        /// Rayleigh α (1/s).
+        rayleigh_alpha: T => scalar,
+        /// Rayleigh β (s).
+        rayleigh_beta: T => scalar,
+        /// Boom mass m (kg, eq. 3.1).
+        mass_kg: T => scalar,
+        /// A·e0: first moment of mass of the undeformed boom in its body frame (kg·m).
+        first_moment_rest: [T; 2] => array,
+        /// A·χ (eq. 3.4): first moment per unit modal coordinate, rows x and y (kg·m).
+        first_moment_modes: [[T; M]; 2] => matrix,
+        /// e0ᵀ·M_αα·e0 (eq. 3.5): rotary inertia of the undeformed boom about A0 (kg·m²).
+        inertia_rest: T => scalar,
+        /// χᵀ·M_αα·e0 (eqs. 3.5, 3.10, 3.11).
+        inertia_coupling: [T; M] => array,
+        /// χᵀ·AA·e0 (eq. 3.6 with AA = ∫ρφᵀJφ).
+        skew_rest: [T; M] => array,
+        /// χᵀ·AA·χ (eqs. 3.6, 3.11), skew-symmetric.
+        skew_modes: [[T; M]; M] => matrix,
+        /// Boom length A0C (m).
+        length_m: T => scalar,
+        /// Distance A0A (m).
+        lug_x_m: T => scalar,
+        /// Displacement of the tip C per unit modal coordinate, rows x and y (body frame).
+        tip_modes: [[T; M]; 2] => matrix,
+        /// Rotation at A per unit modal coordinate (ψ_A·χ, eq. 3.31): zero with the thesis's BCs.
+        lug_rotation_modes: [T; M] => array,
+        /// The nodes (1-based, thesis numbering on its mesh) whose deflection is reported.
+        deflection_nodes: [usize; 3] => copy,
+        /// Transverse displacement of those nodes per unit modal coordinate.
+        deflection_modes: [[T; M]; 3] => matrix,
+        /// Least-squares modal coordinates of the static deflection per unit body-frame
+        /// gravity (columns x, y in m/s²): the thesis's initial state, part 1.
+        static_gravity: [[T; 2]; M] => matrix,
+        /// Least-squares modal coordinates of the static deflection per unit tip force
+        /// (columns x, y in N, body frame): the thesis's initial state, part 2.
+        static_tip: [[T; 2]; M] => matrix,
     }
 }

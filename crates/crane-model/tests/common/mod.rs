@@ -4,6 +4,8 @@
 //! rectangle).
 #![allow(dead_code)]
 
+pub mod dynamics;
+
 use crane_model::data::crane::BoomData;
 use crane_model::data::section::OctagonDims;
 
