@@ -221,7 +221,7 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         let w1 = cfg.mech.boom.angular_velocity;
         cfg.tip_position = cfg.mech.boom.position + cfg.rot * tip_body;
         cfg.tip_velocity =
-            cfg.rot * (Vector2::new(-tip_body.y, tip_body.x) * w1 + cfg.tip_modes * eta_rate);
+            cfg.rot * (perp(tip_body) * w1 + cfg.tip_modes * eta_rate);
         cfg.tip_body = tip_body;
         cfg.eta = eta;
         cfg.eta_rate = eta_rate;
