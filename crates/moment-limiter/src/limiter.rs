@@ -6,8 +6,8 @@
 //!    checks ([`crate::checks`]);
 //! 2. **piston force** (eq. 4.1, [`crate::piston_force`]) and low-pass filters
 //!    on force and angle ([`crate::filter`]); angle rate and direction;
-//! 3. **hook load** from the model's affine piston force
-//!    ([`crate::load_estimate`]);
+//! 3. **hook load** from the model's piston force ([`crate::load_estimate`]),
+//!    the static hook mass whatever the rope ([`crate::static_load`]);
 //! 4. **rated load** from the model's affine jack reaction
 //!    ([`crate::capacity`]);
 //! 5. **utilization and state** ([`crate::state_machine`]), outputs;
@@ -48,12 +48,13 @@ use crate::filter::LowPass;
 use crate::io::{Channel, OutputCommand, OutputError, Outputs, SensorInputs};
 use crate::negative_load::{NegativeLoadBound, NegativeLoadMonitor};
 use crate::load_estimate::{
-    estimate_load_kg, Calibration, Direction, DirectionDetector, DirectionThresholds,
+    load_equation, Calibration, Direction, DirectionDetector, DirectionThresholds,
     EstimateError, Friction,
 };
 use crate::piston_force::piston_force_n;
 use crate::state_machine::{CycleInput, LimiterState, StateMachine, Thresholds};
-use crate::swing::{SwingGeometry, SwingObserver};
+use crate::static_load::{LoadTerms as BankTerms, StaticLoad, StaticLoadBank};
+use crate::swing::SwingGeometry;
 use crate::units::{BoomAngle, PressureBar};
 
 /// Number of events the limiter's log holds.
@@ -139,8 +140,13 @@ pub struct LimiterConfig<T> {
     /// (the sensor's data; see [`Limiter`] "Time alignment"). 0 for a sensor
     /// without lag.
     pub angle_sensor_lag_s: T,
-    /// Crane geometry for the load-swing observer ([`crate::swing`]); `None`
-    /// turns the swing correction off.
+    /// Time constant (s) with which the friction of the last motion is taken
+    /// to leave the force once the boom is still (the seals release; see
+    /// [`crate::load_estimate`]).
+    pub seal_release_s: T,
+    /// Crane geometry for the bank of rope hypotheses and their swing
+    /// observers ([`crate::static_load`]); `None` turns the rope and swing
+    /// corrections off (the load taken hanging straight and still).
     pub swing: Option<SwingGeometry<T>>,
     /// Safety factor and chart.
     pub capacity: Capacity<T>,
@@ -178,6 +184,7 @@ impl<T: Real> LimiterConfig<T> {
             filter_stages: 4,
             direction: DirectionThresholds::standard(),
             angle_sensor_lag_s: T::lit(2.0 * 0.7 / (2.0 * core::f64::consts::PI * 2.0)),
+            seal_release_s: T::lit(0.5),
             swing: Some(SwingGeometry::coles_930()),
             capacity: Capacity::standard(),
             thresholds: Thresholds::standard(),
@@ -204,6 +211,7 @@ impl<T: Real> LimiterConfig<T> {
                 self.angle_sensor_lag_s.is_finite() && self.angle_sensor_lag_s >= T::lit(0.0),
                 "angle_sensor_lag_s",
             ),
+            (hz(self.seal_release_s), "seal_release_s"),
             (self.swing.is_none_or(|g| g.is_valid()), "swing"),
             (self.capacity.is_valid(), "capacity"),
             (self.thresholds.is_valid(), "thresholds"),
@@ -242,13 +250,17 @@ pub struct Measurement<T> {
     pub direction: Direction,
     /// The friction in the force (see [`crate::load_estimate`]).
     pub friction: Friction,
+    /// The share of the last motion's friction still in the force of a
+    /// still boom (1 at the stop, decaying as the seals release).
+    pub static_friction_share: T,
     /// The boom state at the time of the filtered force (the angle advanced
     /// by rate × sensor lag only): what the load estimate hands to the model.
     pub boom: BoomState<T>,
     /// The boom state now: what the rated load is computed at.
     pub boom_now: BoomState<T>,
-    /// tan of the predicted load swing at the time of the filtered force
-    /// (0 without the swing observer).
+    /// tan of the load swing the chosen rope hypothesis predicts at the time
+    /// of the filtered force, as of the previous cycle's choice (0 without
+    /// the swing geometry).
     pub tan_swing: T,
 }
 
@@ -272,6 +284,9 @@ pub struct Estimate<T> {
     pub utilization: T,
     /// Hook radius (m).
     pub radius_m: T,
+    /// The rope-hypothesis bank's parts of the load, before the reading
+    /// factor ([`crate::static_load`]); `None` without the swing geometry.
+    pub static_load: Option<StaticLoad<T>>,
 }
 
 /// The result of one cycle.
@@ -326,22 +341,33 @@ type Readings<T> = (PressureBar<T>, PressureBar<T>, BoomAngle<T>);
 /// filtered angle by
 /// d plus the angle sensor's own lag (the pendulum's 2ζ/ω_n, 0.111 s): left
 /// alone, the model was evaluated 0.111 s × 4.3 °/s ≈ 0.48° away from the
-/// force's angle, ≈ 1 kN of error unloaded. So the model gets the angle
-/// advanced by ω × sensor lag (the force's instant), and the rated load the
-/// angle advanced by ω × (sensor lag + d) (the present instant: lowering, the
-/// rated load falls, and it must not be read late). The same filter on force
-/// and angle keeps both delays equal whatever the cut-off.
+/// force's angle, ≈ 1 kN of error unloaded. Advancing the angle by
+/// ω × lag aligned the angle but not the acceleration, whose inertia terms
+/// (the boom's J·θ̈ and a held load riding up with the tip) then came 0.11 s
+/// late: +13 % on a 90 % load in a 0.5 s start ramp. So the force goes
+/// through a first-order lag of the sensor's lag too, and force, angle, rate
+/// and acceleration all stand for t − lag − d (0.11 s more delay on a
+/// lift-off). The rated load takes the angle advanced by ω × (sensor lag +
+/// d) (the present instant: lowering, the rated load falls, and it must not
+/// be read late). The same filter on force and angle keeps both delays equal
+/// whatever the cut-off.
 #[derive(Debug, Clone)]
 pub struct Limiter<T, M> {
     model: M,
     config: LimiterConfig<T>,
     monitor: PlausibilityMonitor<T>,
+    /// The angle sensor's lag, put on the force too (see "Time alignment").
+    force_lag: Option<LowPass<T>>,
     force_filter: LowPass<T>,
     angle_filter: LowPass<T>,
+    static_friction_share: T,
     previous_angle_deg: Option<T>,
     previous_rate_deg_s: Option<T>,
     moving_for_s: T,
-    swing: Option<SwingObserver<T>>,
+    bank: Option<StaticLoadBank<T>>,
+    /// Time the bank has not been advanced (s): the faulted cycles since
+    /// its last update.
+    bank_idle_s: T,
     direction: DirectionDetector<T>,
     machine: StateMachine<T>,
     log: EventLog<T, EVENT_LOG_LEN>,
@@ -357,12 +383,16 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         config.validate()?;
         Ok(Self {
             monitor: PlausibilityMonitor::new(config.plausibility),
+            force_lag: (config.angle_sensor_lag_s > T::lit(0.0))
+                .then(|| LowPass::new(T::lit(1.0) / (T::two_pi() * config.angle_sensor_lag_s), 1)),
             force_filter: LowPass::new(config.filter_hz, config.filter_stages),
+            static_friction_share: T::lit(1.0),
             angle_filter: LowPass::new(config.filter_hz, config.filter_stages),
             previous_angle_deg: None,
             previous_rate_deg_s: None,
             moving_for_s: T::lit(0.0),
-            swing: config.swing.map(SwingObserver::new),
+            bank: config.swing.map(StaticLoadBank::new),
+            bank_idle_s: T::lit(0.0),
             direction: DirectionDetector::new(config.direction),
             machine: StateMachine::new(config.thresholds),
             log: EventLog::new(),
@@ -530,6 +560,10 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             }
         };
 
+        if measurement.is_none() {
+            self.bank_idle_s += dt_s;
+        }
+
         // Stage 5.
         let input = match (&fault, &estimate) {
             (None, Some(e)) => CycleInput::Utilization(e.utilization),
@@ -576,13 +610,19 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     fn restart_signal_chain(&mut self) {
         self.negative_load.reset();
         self.monitor.break_rate_history();
+        if let Some(l) = self.force_lag.as_mut() {
+            l.reset();
+        }
         self.force_filter.reset();
         self.angle_filter.reset();
         self.previous_angle_deg = None;
         self.previous_rate_deg_s = None;
         self.moving_for_s = T::lit(0.0);
-        if let Some(s) = self.swing.as_mut() {
-            s.reset();
+        // The load keeps swinging through a fault (a pressure out of range
+        // when a short rope swings inward at a steep boom): the swing
+        // observers run on over the gap, only the averages start afresh.
+        if let Some(b) = self.bank.as_mut() {
+            b.restart_averages();
         }
     }
 
@@ -596,6 +636,12 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     ) -> Measurement<T> {
         let cal = &self.config.calibration;
         let force = piston_force_n(p1, p2, cal.p1_offset_bar, cal.p2_offset_bar);
+        // The force through the angle sensor's lag too: force, angle, rate
+        // and acceleration then share one delay (see "Time alignment").
+        let force = match self.force_lag.as_mut() {
+            Some(l) => l.update(force, dt_s),
+            None => force,
+        };
         let force_f = self.force_filter.update(force, dt_s);
         let angle_f = self
             .angle_filter
@@ -622,9 +668,18 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         } else {
             T::lit(0.0)
         };
-        // Time alignment (see the type's doc): the filtered force stands for
-        // t − d (d: the filter delay), the filtered angle for t − d − lag.
-        let at_force = angle_f + rate_f * self.config.angle_sensor_lag_s;
+        // The seals release at standstill (see crate::load_estimate).
+        self.static_friction_share = if direction == Direction::Still {
+            let x = dt_s / self.config.seal_release_s;
+            // e^(−x) ≈ 1/(1 + x + x²/2 + x³/6): no libm exp in the cycle.
+            self.static_friction_share
+                / (T::lit(1.0) + x * (T::lit(1.0) + x * (T::lit(0.5) + x / T::lit(6.0))))
+        } else {
+            T::lit(1.0)
+        };
+        // Time alignment (see the type's doc): the filtered force and the
+        // filtered angle both stand for t − d − lag.
+        let at_force = angle_f;
         let (now, rate_now) = extrapolate(
             angle_f,
             rate_f,
@@ -636,8 +691,13 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             angle_rad: at_force * to_rad,
             rate_rad_s: rate_f * to_rad,
         };
-        let tan_swing = match self.swing.as_mut() {
-            Some(s) => s.update(boom.angle_rad, dt_s),
+        let tan_swing = match self.bank.as_mut() {
+            Some(b) => b.advance(
+                boom.angle_rad,
+                boom.rate_rad_s,
+                accel_f * to_rad,
+                dt_s + core::mem::replace(&mut self.bank_idle_s, T::lit(0.0)),
+            ),
             None => T::lit(0.0),
         };
         Measurement {
@@ -648,6 +708,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             moving_for_s: self.moving_for_s,
             direction,
             friction: self.direction.friction(),
+            static_friction_share: self.static_friction_share,
             boom,
             boom_now: BoomState {
                 angle_rad: now * to_rad,
@@ -658,7 +719,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     }
 
     /// Stages 3–4: load, rating, utilization, from one query of the model.
-    fn assess(&self, m: &Measurement<T>) -> Result<Estimate<T>, Fault> {
+    fn assess(&mut self, m: &Measurement<T>) -> Result<Estimate<T>, Fault> {
         let terms = self.model.cycle_terms(CycleQuery {
             force_angle_rad: m.boom.angle_rad,
             now: m.boom_now,
@@ -666,15 +727,33 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         let load_terms = terms
             .load
             .map_err(|e| Fault::Estimate(EstimateError::Model(e)))?;
-        let load_kg = estimate_load_kg(
+        let (at_rest, force_n) = load_equation(
             &load_terms,
             m.accel_rad_s2(),
             m.piston_force_n,
             &self.config.calibration,
             m.friction,
-            m.tan_swing,
+            m.static_friction_share,
         )
-        .map_err(Fault::Estimate)?
+        .map_err(Fault::Estimate)?;
+        // The static hook mass: the rope-hypothesis bank when the swing
+        // geometry is known, else the load hanging straight and still.
+        let static_load = match self.bank.as_mut() {
+            Some(bank) => Some(
+                bank.update(&BankTerms {
+                    at_rest,
+                    force_n,
+                    angle_rad: m.boom.angle_rad,
+                })
+                .ok_or(Fault::Estimate(EstimateError::NotObservable))?,
+            ),
+            None => None,
+        };
+        let load_kg = match static_load {
+            Some(s) => Some(s.load_kg),
+            None => at_rest.solve(force_n),
+        }
+        .ok_or(Fault::Estimate(EstimateError::NotObservable))?
             * self.config.load_reading_factor;
         let capacity_terms = terms
             .capacity
@@ -696,6 +775,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             tipping_load_kg: rating.tipping_load_kg,
             utilization,
             radius_m: rating.radius_m,
+            static_load,
         })
     }
 }
