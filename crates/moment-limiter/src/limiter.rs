@@ -60,6 +60,11 @@ use crate::units::{BoomAngle, PressureBar};
 /// Number of events the limiter's log holds.
 pub const EVENT_LOG_LEN: usize = 64;
 
+/// Time after a restart of the signal chain (a fault) during which a moving
+/// boom's estimate is no reading (s): three delays of the standard filter
+/// and the sensor lag (0.64 s), when its start-up transient has died out.
+pub const SETTLE_S: f64 = 2.0;
+
 /// Utilization reported when the rated load is zero, and the ceiling of any
 /// reported utilization (keeps logs finite; far above every threshold).
 pub const UTILIZATION_CEILING: f64 = 10.0;
@@ -92,6 +97,9 @@ pub enum Fault {
     /// hook load is negative, so the estimate (or a sensor or the
     /// calibration) is wrong.
     ImplausibleLoad,
+    /// The signal chain restarted after a fault less than [`SETTLE_S`] ago
+    /// with the boom moving: the filters' start-up is no reading yet.
+    Settling,
     /// The outputs could not be driven.
     Output,
 }
@@ -106,6 +114,7 @@ impl fmt::Display for Fault {
             Fault::Capacity(CapacityError::NotObservable) => f.write_str("capacity not observable"),
             Fault::Clock(c) => write!(f, "{c}"),
             Fault::ImplausibleLoad => f.write_str("load estimate implausibly negative"),
+            Fault::Settling => f.write_str("signal chain settling after a fault"),
             Fault::Output => f.write_str("output driver failed"),
         }
     }
@@ -361,6 +370,8 @@ pub struct Limiter<T, M> {
     force_filter: LowPass<T>,
     angle_filter: LowPass<T>,
     static_friction_share: T,
+    /// Time since the signal chain restarted (s), while under [`SETTLE_S`].
+    since_restart_s: Option<T>,
     previous_angle_deg: Option<T>,
     previous_rate_deg_s: Option<T>,
     moving_for_s: T,
@@ -387,6 +398,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
                 .then(|| LowPass::new(T::lit(1.0) / (T::two_pi() * config.angle_sensor_lag_s), 1)),
             force_filter: LowPass::new(config.filter_hz, config.filter_stages),
             static_friction_share: T::lit(1.0),
+            since_restart_s: None,
             angle_filter: LowPass::new(config.filter_hz, config.filter_stages),
             previous_angle_deg: None,
             previous_rate_deg_s: None,
@@ -542,13 +554,22 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
                     Ok(()) => {
                         let m = self.measure(p1, p2, angle, dt_s);
                         measurement = Some(m);
+                        // After a restart the filters start settled: for a
+                        // moving boom their start-up reads as an acceleration
+                        // the force never had. Not a reading until it passed.
+                        let settling = self.settling(&m, dt_s);
                         match self.assess(&m) {
                             Ok(e) => {
                                 estimate = Some(e);
                                 // A load no hook can give is no reading.
-                                self.negative_load
-                                    .implausible(e.load_kg, m.boom.angle_rad, dt_s)
-                                    .then_some(Fault::ImplausibleLoad)
+                                let negative = self
+                                    .negative_load
+                                    .implausible(e.load_kg, m.boom.angle_rad, dt_s);
+                                if negative {
+                                    Some(Fault::ImplausibleLoad)
+                                } else {
+                                    settling.then_some(Fault::Settling)
+                                }
                             }
                             Err(f) => {
                                 self.negative_load.reset();
@@ -605,9 +626,21 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         }
     }
 
+    /// `true` while the signal chain restarted less than [`SETTLE_S`] ago
+    /// and the boom moves (a still boom's start is its true history).
+    fn settling(&mut self, m: &Measurement<T>, dt_s: T) -> bool {
+        let Some(t) = self.since_restart_s else {
+            return false;
+        };
+        let t = t + dt_s;
+        self.since_restart_s = (t < T::lit(SETTLE_S)).then_some(t);
+        self.since_restart_s.is_some() && m.direction != Direction::Still
+    }
+
     /// After a bad cycle the filters restart settled on the next good sample,
     /// so no faulty value ever reaches them.
     fn restart_signal_chain(&mut self) {
+        self.since_restart_s = Some(T::lit(0.0));
         self.negative_load.reset();
         self.monitor.break_rate_history();
         if let Some(l) = self.force_lag.as_mut() {
