@@ -126,6 +126,8 @@ pub struct CalibrationLearner<T> {
     up: (T, u32),
     down: (T, u32),
     rest: (T, u32),
+    /// Sum of the model's piston force per kg over the rest samples.
+    rest_per_kg: T,
 }
 
 impl<T: Real> Default for CalibrationLearner<T> {
@@ -148,6 +150,7 @@ impl<T: Real> CalibrationLearner<T> {
             up: (T::lit(0.0), 0),
             down: (T::lit(0.0), 0),
             rest: (T::lit(0.0), 0),
+            rest_per_kg: T::lit(0.0),
         }
     }
 
@@ -172,6 +175,7 @@ impl<T: Real> CalibrationLearner<T> {
                     let r = m.piston_force_n - inertia - f.at_zero;
                     self.rest.0 += r;
                     self.rest.1 = self.rest.1.saturating_add(1);
+                    self.rest_per_kg += f.per_kg;
                 }
                 return Ok(());
             }
@@ -219,6 +223,15 @@ impl<T: Real> CalibrationLearner<T> {
     /// Number of samples at rest with the seals released.
     pub fn rest_count(&self) -> u32 {
         self.rest.1
+    }
+
+    /// The hook load (kg) the mean rest residual would be (the residual over
+    /// the model's mean force per kg at the rest samples): what a load left
+    /// on the "unloaded" run weighs.
+    pub fn rest_load_kg(&self) -> Option<T> {
+        let per_kg = self.rest_per_kg / T::lit(f64::from(self.rest.1.max(1)));
+        let r = self.mean_rest_residual_n()?;
+        (per_kg > T::lit(0.0)).then(|| r / per_kg)
     }
 
     /// Mean residual at rest (N): the force offset, if any rest sample.

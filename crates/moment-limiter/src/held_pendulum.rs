@@ -153,6 +153,9 @@ mod tests {
             hi = hi.max(f);
         }
         assert!((lo - 25f64.to_radians().cos().powi(2)).abs() < 0.01, "{lo}");
-        assert!((hi - (3.0 - 2.0 * 25f64.to_radians().cos())).abs() < 0.01, "{hi}");
+        assert!(
+            (hi - (3.0 - 2.0 * 25f64.to_radians().cos())).abs() < 0.01,
+            "{hi}"
+        );
     }
 }

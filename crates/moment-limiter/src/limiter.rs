@@ -38,19 +38,19 @@ use crane_model::load_model::{BoomState, CycleQuery, HookLoadModel};
 use crane_model::Real;
 
 use crate::capacity::{Capacity, CapacityError};
-use crate::clock::{Clock, ClockConfig, ClockFault, Ticks};
 use crate::checks::{
     channel_name, FaultKind, PlausibilityConfig, PlausibilityMonitor, SensorFault,
 };
+use crate::clock::{Clock, ClockConfig, ClockFault, Ticks};
 use crate::conversion::SensorConversion;
 use crate::event_log::{Event, EventKind, EventLog};
 use crate::filter::LowPass;
 use crate::io::{Channel, OutputCommand, OutputError, Outputs, SensorInputs};
-use crate::negative_load::{NegativeLoadBound, NegativeLoadMonitor};
 use crate::load_estimate::{
-    load_equation, Calibration, Direction, DirectionDetector, DirectionThresholds,
-    EstimateError, Friction,
+    load_equation, Calibration, Direction, DirectionDetector, DirectionThresholds, EstimateError,
+    Friction,
 };
+use crate::negative_load::{NegativeLoadBound, NegativeLoadMonitor};
 use crate::piston_force::piston_force_n;
 use crate::state_machine::{CycleInput, LimiterState, StateMachine, Thresholds};
 use crate::static_load::{LoadTerms as BankTerms, StaticLoad, StaticLoadBank};
@@ -562,9 +562,11 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
                             Ok(e) => {
                                 estimate = Some(e);
                                 // A load no hook can give is no reading.
-                                let negative = self
-                                    .negative_load
-                                    .implausible(e.load_kg, m.boom.angle_rad, dt_s);
+                                let negative = self.negative_load.implausible(
+                                    e.load_kg,
+                                    m.boom.angle_rad,
+                                    dt_s,
+                                );
                                 if negative {
                                     Some(Fault::ImplausibleLoad)
                                 } else {
@@ -724,13 +726,32 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             angle_rad: at_force * to_rad,
             rate_rad_s: rate_f * to_rad,
         };
+        let settling = self.since_restart_s.is_some();
         let tan_swing = match self.bank.as_mut() {
-            Some(b) => b.advance(
-                boom.angle_rad,
-                boom.rate_rad_s,
-                accel_f * to_rad,
-                dt_s + core::mem::replace(&mut self.bank_idle_s, T::lit(0.0)),
-            ),
+            Some(b) => {
+                if settling {
+                    // The filters restarted at this reading: the swing is
+                    // carried over relative to the tip (no jump of the
+                    // filtered angle kicks it), the filters' start-up
+                    // acceleration is not the boom's, and no average
+                    // starts from a reading that is none yet.
+                    if self.since_restart_s == Some(T::lit(0.0)) {
+                        b.rebase(boom.angle_rad);
+                    }
+                    b.restart_averages();
+                }
+                let accel = if settling {
+                    T::lit(0.0)
+                } else {
+                    accel_f * to_rad
+                };
+                b.advance(
+                    boom.angle_rad,
+                    boom.rate_rad_s,
+                    accel,
+                    dt_s + core::mem::replace(&mut self.bank_idle_s, T::lit(0.0)),
+                )
+            }
             None => T::lit(0.0),
         };
         Measurement {

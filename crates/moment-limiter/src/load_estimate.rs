@@ -269,7 +269,14 @@ pub fn estimate_load_kg<T: Real>(
     friction: Friction,
     tan_swing: T,
 ) -> Result<T, EstimateError> {
-    let (f, force) = load_equation(terms, accel_rad_s2, force_n, calibration, friction, T::lit(0.0))?;
+    let (f, force) = load_equation(
+        terms,
+        accel_rad_s2,
+        force_n,
+        calibration,
+        friction,
+        T::lit(0.0),
+    )?;
     let f = f.scale_load_part(T::lit(1.0) + terms.tan_angle * tan_swing);
     f.solve(force).ok_or(EstimateError::NotObservable)
 }
@@ -295,7 +302,10 @@ pub fn load_equation<T: Real>(
     }
     Ok((
         f,
-        force_n - inertia - calibration.force_offset_n - calibration.correction_n(friction, static_share),
+        force_n
+            - inertia
+            - calibration.force_offset_n
+            - calibration.correction_n(friction, static_share),
     ))
 }
 
@@ -330,8 +340,14 @@ mod tests {
             ..Calibration::<f64>::none()
         };
         let at = |last_moving, share| cal.correction_n(Friction::Static { last_moving }, share);
-        assert_eq!(cal.correction_n(Friction::Sliding(Direction::Up), 0.3), 12.0);
-        assert_eq!(cal.correction_n(Friction::Sliding(Direction::Down), 0.3), -8.0);
+        assert_eq!(
+            cal.correction_n(Friction::Sliding(Direction::Up), 0.3),
+            12.0
+        );
+        assert_eq!(
+            cal.correction_n(Friction::Sliding(Direction::Down), 0.3),
+            -8.0
+        );
         assert_eq!(at(Some(Direction::Up), 1.0), 12.0);
         assert_eq!(at(Some(Direction::Up), 0.5), 6.0);
         assert_eq!(at(Some(Direction::Down), 0.25), -2.0);

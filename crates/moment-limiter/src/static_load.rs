@@ -67,7 +67,16 @@
 //!   whose error is lowest on average. It holds the weighing through a move,
 //!   so a load never reads lower in motion than the bank's averaged
 //!   weighing; it follows a lighter load (a load set down) over
-//!   [`SLOW_TAU_S`]·[`SLOW_STAGES`].
+//!   [`SLOW_TAU_S`]·[`SLOW_STAGES`]. While every hypothesis's factor
+//!   agrees within [`AGREEMENT`] with the boom still (no swing predicted;
+//!   in motion the factors may cross without agreeing), or the
+//!   boom has not luffed since the bank started (a lift-off before the first
+//!   move), all ropes read the same W and the
+//!   averages are set to W_fast, so a move starts from the full weighing
+//!   rather than from an average still climbing after a lift-off (a fast
+//!   lowering from 80° otherwise started at 0.6 of the load). A hypothesis
+//!   that cannot weigh (below) starts its average afresh when it can again
+//!   (a frozen one resumed with a stale weighing: 0.97 of the load).
 //!
 //! A held rope longer than the tip is high (the load would be below ground)
 //! is impossible: such hypotheses are left out while the boom is that low.
@@ -75,8 +84,8 @@
 //! swung inward at a steep boom: at 80° tan θ = 5.7, and a 3 m rope stopped
 //! from a 10 s move swings 14°, so the load's pull on the cylinder nearly
 //! vanishes), the force cannot weigh the load (every error is divided by
-//! the factor): that hypothesis is left out of W_fast and its average
-//! waits. Which hypotheses take part depends on the boom's motion only,
+//! the factor): that hypothesis is left out of W_fast and W_slow, and its average
+//! restarts when it can weigh again. Which hypotheses take part depends on the boom's motion only,
 //! never on the force. When none can weigh, the load is taken hanging
 //! straight and still (factor 1).
 //!
@@ -104,6 +113,18 @@ pub const SLOW_TAU_S: f64 = 3.0;
 
 /// Number of first-order stages of the slow average.
 pub const SLOW_STAGES: usize = 2;
+
+/// The hypotheses agree when their factors are within this fraction of each
+/// other (a still boom with no swing predicted): the averages are then set to
+/// W_fast.
+pub const AGREEMENT: f64 = 0.005;
+
+/// Boom rate above which the bank counts the boom as having luffed (rad/s,
+/// 0.15 °/s: the limiter's start-of-motion threshold). Before the first
+/// luff no hypothesis has a swing of its own (what the observers show then is
+/// the angle's noise, which at 80° spreads the factors by over 1 %), so
+/// all agree.
+pub const MOVING_RAD_S: f64 = 0.15 * core::f64::consts::PI / 180.0;
 
 /// Cut-off of the one first-order stage W_fast goes through (Hz): the
 /// load's bounce on the boom (1–2 Hz near rated load in a held rope, ±25 %
@@ -149,6 +170,10 @@ pub struct StaticLoadBank<T> {
     dt_s: T,
     /// The smoothing stage of W_fast; `None` until the first load.
     fast_stage: Option<T>,
+    /// The boom has luffed since the bank started: swings may differ.
+    moved: bool,
+    /// The boom's rate at the last advance is below [`MOVING_RAD_S`].
+    still: bool,
 }
 
 /// The bank's answer of one cycle.
@@ -166,9 +191,12 @@ impl<T: Real> StaticLoadBank<T> {
     /// A bank with the load hanging still in every hypothesis.
     pub fn new(geometry: SwingGeometry<T>) -> Self {
         let make = |k: usize| {
-            let held = k.checked_sub(1).and_then(|i| HELD_LENGTHS_M.get(i)).map(|&l| {
-                HeldPendulum::new(T::lit(l), geometry.boom_length_m, geometry.gravity_m_s2)
-            });
+            let held = k
+                .checked_sub(1)
+                .and_then(|i| HELD_LENGTHS_M.get(i))
+                .map(|&l| {
+                    HeldPendulum::new(T::lit(l), geometry.boom_length_m, geometry.gravity_m_s2)
+                });
             Hypothesis {
                 held,
                 swing: SwingObserver::new(geometry),
@@ -181,6 +209,8 @@ impl<T: Real> StaticLoadBank<T> {
             hypotheses: core::array::from_fn(make),
             dt_s: T::lit(0.0),
             fast_stage: None,
+            moved: false,
+            still: true,
         }
     }
 
@@ -191,6 +221,17 @@ impl<T: Real> StaticLoadBank<T> {
             h.slow_kg = None;
         }
         self.fast_stage = None;
+    }
+
+    /// Moves every paid-out-rope observer's tip to `angle_rad` keeping its
+    /// swing relative to the tip (after the filters restarted at a new
+    /// reading: the jump of the filtered angle is no motion of the boom).
+    /// The held-rope pendulums are driven by the tip's acceleration, not its
+    /// position, and need nothing.
+    pub fn rebase(&mut self, angle_rad: T) {
+        for h in self.hypotheses.iter_mut() {
+            h.swing.rebase(angle_rad);
+        }
     }
 
     /// Forgets swing and averages (after a sensor fault broke the angle).
@@ -210,6 +251,10 @@ impl<T: Real> StaticLoadBank<T> {
                 }
                 None => h.swing.update(angle_rad, dt_s),
             };
+        }
+        self.still = rate_rad_s.abs() <= T::lit(MOVING_RAD_S);
+        if !self.still {
+            self.moved = true;
         }
         self.dt_s = if dt_s.is_finite() && dt_s > T::lit(0.0) {
             dt_s
@@ -245,40 +290,44 @@ impl<T: Real> StaticLoadBank<T> {
         let x = self.dt_s / T::lit(SLOW_TAU_S);
         let e = T::lit(1.0) + x * (T::lit(1.0) + x * (T::lit(0.5) + x / T::lit(6.0)));
         let alpha = T::lit(1.0) - T::lit(1.0) / e;
+        // The factors first: which hypotheses weigh, and how far apart they
+        // are (motion only).
+        let mut factors = [None; HYPOTHESES];
+        let (mut f_lo, mut f_hi): (Option<T>, Option<T>) = (None, None);
+        for (slot, h) in factors.iter_mut().zip(self.hypotheses.iter()) {
+            *slot = self.factor(h, tan_theta, tip_height);
+            if let Some(f) = *slot {
+                f_lo = Some(f_lo.map_or(f, |l: T| l.min(f)));
+                f_hi = Some(f_hi.map_or(f, |h: T| h.max(f)));
+            }
+        }
+        let agree = !self.moved
+            || self.still
+                && match (f_lo, f_hi) {
+                    (Some(lo), Some(hi)) => hi <= lo * T::lit(1.0 + AGREEMENT),
+                    _ => false,
+                };
         let mut fast: Option<T> = None;
-        let mut slow: Option<T> = None;
-        let mut weighed = false;
-        for k in 0..HYPOTHESES {
-            let Some(h) = self.hypotheses.get(k).copied() else {
+        for (h, factor) in self.hypotheses.iter_mut().zip(factors.iter()) {
+            let Some(f) = *factor else {
+                // Cannot weigh now: its average starts afresh when it can.
+                h.slow_kg = None;
                 continue;
             };
-            let factor = self.factor(&h, tan_theta, tip_height);
-            let w = match factor {
-                Some(f) => Some(terms.at_rest.scale_load_part(f).solve(terms.force_n)?),
-                None => None,
-            };
-            let Some(slot) = self.hypotheses.get_mut(k) else {
-                continue;
-            };
-            let Some(w) = w else {
-                slot.slow_kg = None;
-                continue;
-            };
-            weighed = true;
-            fast = Some(fast.map_or(w, |f: T| f.min(w)));
-            let mut stages = slot.slow_kg.unwrap_or([w; SLOW_STAGES]);
+            let w = terms.at_rest.scale_load_part(f).solve(terms.force_n)?;
+            fast = Some(fast.map_or(w, |m: T| m.min(w)));
+            let mut stages = h.slow_kg.unwrap_or([w; SLOW_STAGES]);
             let mut input = w;
             for st in stages.iter_mut() {
                 *st += alpha * (input - *st);
                 input = *st;
             }
-            slot.slow_kg = Some(stages);
-            slow = Some(slow.map_or(input, |s: T| s.min(input)));
+            h.slow_kg = Some(stages);
         }
-        let fast = match (weighed, fast) {
-            (true, Some(f)) => f,
+        let fast = match fast {
+            Some(f) => f,
             // No hypothesis can weigh: the load hanging straight and still.
-            _ => terms.at_rest.solve(terms.force_n)?,
+            None => terms.at_rest.solve(terms.force_n)?,
         };
         // One stage against the bounce (gain as for the slow stages).
         let x = self.dt_s * T::two_pi() * T::lit(FAST_SMOOTHING_HZ);
@@ -289,6 +338,20 @@ impl<T: Real> StaticLoadBank<T> {
             None => fast,
         };
         self.fast_stage = Some(fast);
+        // While every rope agrees, the weighing is W_fast itself: the
+        // averages start the next move from it (a lift-off is in them at once).
+        // Only the hypotheses that weigh now vote: a frozen average is a
+        // weighing from before the rope became impossible.
+        let mut slow: Option<T> = None;
+        for (h, factor) in self.hypotheses.iter_mut().zip(factors.iter()) {
+            if agree {
+                h.slow_kg = Some([fast; SLOW_STAGES]);
+            }
+            let last = h.slow_kg.and_then(|st| st.last().copied());
+            if let (Some(_), Some(last)) = (factor, last) {
+                slow = Some(slow.map_or(last, |m: T| m.min(last)));
+            }
+        }
         Some(StaticLoad {
             load_kg: slow.map_or(fast, |s| s.max(fast)),
             fast_kg: fast,
@@ -303,7 +366,11 @@ mod tests {
 
     /// A model of slope 10 N/kg and 100 kN at zero load.
     fn at_rest() -> Quadratic<f64> {
-        Quadratic { at_zero: 100_000.0, per_kg: 10.0, per_kg2: 0.0 }
+        Quadratic {
+            at_zero: 100_000.0,
+            per_kg: 10.0,
+            per_kg2: 0.0,
+        }
     }
 
     #[test]
@@ -324,7 +391,11 @@ mod tests {
             let truth = bank.hypotheses[5].held.unwrap().factor();
             let force = 100_000.0 + 10.0 * 3000.0 * truth;
             let est = bank
-                .update(&LoadTerms { at_rest: at_rest(), force_n: force, angle_rad: th })
+                .update(&LoadTerms {
+                    at_rest: at_rest(),
+                    force_n: force,
+                    angle_rad: th,
+                })
                 .unwrap();
             worst = worst.max((est.load_kg / 3000.0 - 1.0).abs());
         }
@@ -341,7 +412,11 @@ mod tests {
             bank.advance(th, 0.0, 0.0, 0.01);
             let w = if k < 200 { 3000.0 } else { 4000.0 };
             let est = bank
-                .update(&LoadTerms { at_rest: at_rest(), force_n: 100_000.0 + 10.0 * w, angle_rad: th })
+                .update(&LoadTerms {
+                    at_rest: at_rest(),
+                    force_n: 100_000.0 + 10.0 * w,
+                    angle_rad: th,
+                })
                 .unwrap();
             assert!(est.load_kg <= w + 1e-9, "{k}: {}", est.load_kg);
             if k < 200 {

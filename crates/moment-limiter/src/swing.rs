@@ -119,6 +119,15 @@ impl<T: Real> SwingObserver<T> {
         self.state = None;
     }
 
+    /// Moves the tip to `angle_rad` at once, keeping the load's position and
+    /// velocity relative to it (a restart of the filtered angle, not a move).
+    pub fn rebase(&mut self, angle_rad: T) {
+        if let Some((x, v, xc0, _)) = self.state {
+            let (xc1, l1) = self.geometry.tip(angle_rad);
+            self.state = Some((x + (xc1 - xc0), v, xc1, l1));
+        }
+    }
+
     /// Advances to boom angle `angle_rad`, `dt_s` after the previous update;
     /// returns tan φ (positive: load outward of the tip), clamped.
     pub fn update(&mut self, angle_rad: T, dt_s: T) -> T {
