@@ -247,7 +247,7 @@ fn self_test_fails_on_code_altered_after_stamping() {
 fn model_reference_table_matches_the_shipped_model() {
     // The model behind firmware/src/model.rs::hook_load_model(); keep these two
     // in step (see firmware/README.md, "The model seam").
-    let model = crane_model::thesis_modes::thesis_load_model_f32();
+    let model = crane_model::loads::thesis_modes::thesis_load_model_f32();
     let mut table = String::new();
     let mut all_agree = true;
     for p in &model_reference::REFERENCE {

@@ -153,7 +153,7 @@ fn compare(label: &str, log: &Path, extra: &[&str]) -> String {
         assert_eq!(qv[key], hv[key], "{label} --json: `{key}` differs");
     }
     // Without a calibration both say so on stderr, in the same words.
-    let note = moment_limiter::replay::UNCALIBRATED_NOTE;
+    let note = moment_limiter::tools::replay::UNCALIBRATED_NOTE;
     let calibrated = extra.iter().any(|a| a.starts_with("--calibration"));
     assert_eq!(q.stderr.contains(note), !calibrated, "{label}: QEMU stderr: {}", q.stderr);
     assert_eq!(h.stderr.contains(note), !calibrated, "{label}: host stderr: {}", h.stderr);
@@ -203,18 +203,18 @@ fn qemu_and_host_replays_give_identical_timelines() {
 /// The same replay in this (host) process, in `f32` like the MCU, with the
 /// model the firmware uses (`firmware/src/model.rs`: keep the two in step).
 fn in_process_f32(log: &Path, calibration: Option<&Path>) -> (String, i32) {
-    use moment_limiter::limiter::{Limiter, LimiterConfig};
-    use moment_limiter::log_format::LogParser;
-    use moment_limiter::replay::{self, Replay};
+    use moment_limiter::cycle::{Limiter, LimiterConfig};
+    use moment_limiter::tools::log_format::LogParser;
+    use moment_limiter::tools::replay::{self, Replay};
 
     let mut config = LimiterConfig::<f32>::standard();
     if let Some(cal) = calibration {
         // The same reader the firmware uses.
         config.calibration =
-            moment_limiter::config_file::parse_calibration(&std::fs::read(cal).unwrap()).unwrap();
+            moment_limiter::tools::config_file::parse_calibration(&std::fs::read(cal).unwrap()).unwrap();
     }
     let mut replay = Replay::new(
-        Limiter::new(crane_model::thesis_modes::thesis_load_model_f32(), config).unwrap(),
+        Limiter::new(crane_model::loads::thesis_modes::thesis_load_model_f32(), config).unwrap(),
         calibration.is_some(),
     );
     let mut parser = LogParser::<f32>::new();
@@ -293,7 +293,7 @@ fn shifted_copy(log: &Path, shift_us: i64, out: &Path) {
             dst.push_str(line);
         } else {
             let (t, rest) = line.split_once(',').unwrap();
-            let us = moment_limiter::log_format::parse_time_us(t).unwrap() + shift_us;
+            let us = moment_limiter::tools::log_format::parse_time_us(t).unwrap() + shift_us;
             let (sign, a) = (if us < 0 { "-" } else { "" }, us.unsigned_abs());
             dst.push_str(&format!("{sign}{}.{:06},{rest}", a / 1_000_000, a % 1_000_000));
         }
@@ -358,7 +358,7 @@ fn qemu_shifted_logs_give_identical_events() {
 }
 
 /// Issue 12: the hostile calibration table through the firmware's reader
-/// (the shared `moment_limiter::config_file`) on the MCU: every file refused
+/// (the shared `moment_limiter::tools::config_file`) on the MCU: every file refused
 /// with exit 1 and the same message as `crane-sim replay`.
 #[test]
 fn qemu_refuses_every_hostile_calibration_like_the_host() {
@@ -369,7 +369,7 @@ fn qemu_refuses_every_hostile_calibration_like_the_host() {
     build(&["-p", "host-sim"]);
     let dir = scratch("qemu-hostile-calibration");
     let log = logs().into_iter().next().expect("a log");
-    let cases = moment_limiter::config_file::hostile::cases();
+    let cases = moment_limiter::tools::config_file::hostile::cases();
     for (k, (name, content, expect)) in cases.iter().enumerate() {
         let cal = dir.join(format!("case{k}.json"));
         std::fs::write(&cal, content).unwrap();

@@ -52,7 +52,7 @@ use limiter_storage::store::{Key, Layout, Store, BLOB_MAX};
 use moment_limiter::clock::{ClockConfig, Ticks};
 use moment_limiter::conversion::SensorConversion;
 use moment_limiter::io::{Channel, OutputCommand, Outputs, SensorInputs};
-use moment_limiter::limiter::{Limiter, LimiterConfig};
+use moment_limiter::cycle::{Limiter, LimiterConfig};
 use stm32f4xx_hal::{
     flash::{FlashExt, LockedFlash},
     gpio::{Input, Output, Pin, PinState},

@@ -11,7 +11,7 @@
 //! This file is also compiled into the host test (`#[path]`), so it uses only
 //! `core` and `crane_model`.
 
-use crane_model::load_model::{BoomState, HookLoadModel};
+use crane_model::loads::load_model::{BoomState, HookLoadModel};
 
 /// One reference point: boom state and hook load in, model outputs out.
 #[derive(Debug, Clone, Copy, PartialEq)]

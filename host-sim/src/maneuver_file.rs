@@ -1,14 +1,14 @@
 //! Maneuver files (`--maneuver FILE`, `docs/maneuvers.md`): a session of segments
 //! (hold, luff, lift-off) at a fixed slew, in TOML or JSON, read into a
-//! [`crane_model::simulation::Program`].
+//! [`crane_model::sim::simulation::Program`].
 //!
 //! Every key is checked: unknown keys are refused, and a value out of range is
 //! reported with the segment it belongs to.
 
 use anyhow::{bail, Context, Result};
-use crane_model::profile::RampShape;
-use crane_model::rope::RopeChoice;
-use crane_model::simulation::{Program, Segment};
+use crane_model::data::profile::RampShape;
+use crane_model::multibody::rope::RopeChoice;
+use crane_model::sim::simulation::{Program, Segment};
 use serde::Deserialize;
 use std::path::Path;
 

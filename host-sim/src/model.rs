@@ -1,6 +1,6 @@
 //! The built-in crane model, built once per process (f64, thesis mesh and basis).
 
-use crane_model::modal::{MeshRefinement, THESIS_BASIS};
+use crane_model::structure::modal::{MeshRefinement, THESIS_BASIS};
 use crane_model::multibody::ThesisModel;
 use crane_model::CraneData;
 

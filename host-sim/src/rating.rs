@@ -11,9 +11,9 @@
 
 use crate::cmd::replay::crane_load_model;
 use anyhow::{anyhow, bail, Result};
-use crane_model::load_model::{BoomState, HookLoadModel};
+use crane_model::loads::load_model::{BoomState, HookLoadModel};
 use moment_limiter::capacity::{Capacity, Rating};
-use moment_limiter::limiter::LimiterConfig;
+use moment_limiter::cycle::LimiterConfig;
 
 /// The limiter's capacity settings with another safety factor (≥ 1).
 pub fn limiter_capacity(safety_factor: f64) -> Result<Capacity<f32>> {
@@ -44,9 +44,9 @@ pub fn rated_at<M: HookLoadModel<f32>>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use moment_limiter::limiter::Limiter;
-    use moment_limiter::log_format::LogParser;
-    use moment_limiter::replay::Replay;
+    use moment_limiter::cycle::Limiter;
+    use moment_limiter::tools::log_format::LogParser;
+    use moment_limiter::tools::replay::Replay;
 
     /// A moving replay: every rated sample of the limiter is
     /// `Capacity::rating` at the boom state it rated (`Measurement::boom_now`:

@@ -10,9 +10,9 @@
 
 use crate::plot::{write_svg_and_png, Band, HLine, Panel, Series, PALETTE};
 use anyhow::{Context as _, Result};
-use moment_limiter::limiter::StepReport;
-use moment_limiter::log_format::{LogError, Record};
-use moment_limiter::replay::{ReplayEvent, ReplaySummary};
+use moment_limiter::cycle::StepReport;
+use moment_limiter::tools::log_format::{LogError, Record};
+use moment_limiter::tools::replay::{ReplayEvent, ReplaySummary};
 use moment_limiter::state_machine::LimiterState;
 use plotters::style::RGBColor;
 use std::fmt::Write as _;

@@ -15,24 +15,23 @@
 //! Run: `cargo test --release -p host-sim --test field_limiter -- --nocapture`
 //! (prints the measured figures per group).
 
-#[path = "../src/synth_core.rs"]
-#[allow(dead_code)]
-mod synth_core;
+use host_sim::synth_core;
 
 use std::sync::OnceLock;
 
-use crane_model::load_model::{BoomState, HookLoadModel};
-use crane_model::modal::{MeshRefinement, THESIS_BASIS};
+use crane_model::loads::load_model::{BoomState, HookLoadModel};
+use crane_model::structure::modal::{MeshRefinement, THESIS_BASIS};
 use crane_model::multibody::ThesisModel;
-use crane_model::profile::RampShape;
-use crane_model::rope::RopeChoice;
-use crane_model::simulation::{Direction, Maneuver, Program, Segment};
-use crane_model::thesis_modes::thesis_load_model_f32;
+use crane_model::data::profile::RampShape;
+use crane_model::multibody::rope::RopeChoice;
+use crane_model::sim::simulation::{Direction, Maneuver, Program, Segment};
+use crane_model::loads::thesis_modes::thesis_load_model_f32;
 use crane_model::{CraneData, Real};
 use moment_limiter::calibration::CalibrationLearner;
 use moment_limiter::capacity::Capacity;
 use moment_limiter::clock::Ticks;
-use moment_limiter::limiter::{Frame, Limiter, LimiterConfig};
+use moment_limiter::cycle::{Limiter, LimiterConfig};
+use moment_limiter::io::Frame;
 use moment_limiter::load_estimate::Calibration;
 use moment_limiter::state_machine::LimiterState;
 use synth_core::{options_for_rate, simulate, simulate_program, synthesize, FrictionLaw, SensorModel, SynthRow};

@@ -5,7 +5,7 @@
 use std::path::Path;
 use std::process::{Command, Output, Stdio};
 
-use moment_limiter::log_format::parse_time_us;
+use moment_limiter::tools::log_format::parse_time_us;
 
 mod common;
 use common::{bin, example, json, replay, text};
@@ -192,7 +192,7 @@ fn bad_time_is_a_fault_or_an_error_never_exit_0() {
 #[test]
 fn every_hostile_calibration_is_refused_with_exit_1_naming_the_key() {
     let dir = tempfile::tempdir().unwrap();
-    let cases = moment_limiter::config_file::hostile::cases();
+    let cases = moment_limiter::tools::config_file::hostile::cases();
     assert!(cases.len() > 50);
     for (k, (name, content, expect)) in cases.iter().enumerate() {
         let cal = dir.path().join(format!("hostile_{k}.json"));
@@ -207,7 +207,7 @@ fn every_hostile_calibration_is_refused_with_exit_1_naming_the_key() {
     }
     // The good base file is accepted (so the refusals are the alterations').
     let good = dir.path().join("good.json");
-    std::fs::write(&good, moment_limiter::config_file::hostile::GOOD).unwrap();
+    std::fs::write(&good, moment_limiter::tools::config_file::hostile::GOOD).unwrap();
     let out = replay(&example("safe_lift.csv"), &["--calibration", good.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
 

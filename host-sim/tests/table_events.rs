@@ -5,11 +5,11 @@
 
 use std::path::PathBuf;
 
-use crane_model::load_model::HookLoadModel;
+use crane_model::loads::load_model::HookLoadModel;
 use crane_model::Real;
-use moment_limiter::limiter::{Limiter, LimiterConfig};
-use moment_limiter::log_format::LogParser;
-use moment_limiter::replay::Replay;
+use moment_limiter::cycle::{Limiter, LimiterConfig};
+use moment_limiter::tools::log_format::LogParser;
+use moment_limiter::tools::replay::Replay;
 use moment_limiter::state_machine::LimiterState;
 
 fn example(name: &str) -> PathBuf {
@@ -38,9 +38,9 @@ fn events<T: Real, M: HookLoadModel<T>>(model: M, log: &str) -> (Vec<(u32, Limit
 
 #[test]
 fn table_and_full_model_change_state_at_the_same_samples_on_the_example_logs() {
-    let full = crane_model::tipping::CachedLoadModel::new(crane_model::load_table::thesis_full_model().expect("model"));
+    let full = crane_model::loads::tipping::CachedLoadModel::new(crane_model::loads::load_table::thesis_full_model().expect("model"));
     for log in ["safe_lift.csv", "overload_lowering.csv", "unloaded_up.csv", "unloaded_down.csv", "wire_break.csv", "malformed.csv"] {
-        let (table_events, table_max) = events::<f32, _>(crane_model::thesis_modes::thesis_load_model_f32(), log);
+        let (table_events, table_max) = events::<f32, _>(crane_model::loads::thesis_modes::thesis_load_model_f32(), log);
         let (full_events, full_max) = events::<f64, _>(full.clone(), log);
         println!("{log}: table {table_events:?} max {table_max:.4}; full {full_events:?} max {full_max:.4}");
         assert_eq!(table_events, full_events, "{log}");

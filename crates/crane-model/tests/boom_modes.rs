@@ -2,10 +2,10 @@
 //! modal reduction and damping (thesis §3.2, §4.3, Appendix A; SPEC §2–3).
 
 use crane_model::multibody::CraneModel;
-use crane_model::crane::CraneData;
-use crane_model::fe::DOF_PER_NODE;
-use crane_model::modal::{MeshRefinement, ModalAnalysis, ModeKind, THESIS_BASIS};
-use crane_model::section::boom_section_at;
+use crane_model::data::crane::CraneData;
+use crane_model::structure::fe::DOF_PER_NODE;
+use crane_model::structure::modal::{MeshRefinement, ModalAnalysis, ModeKind, THESIS_BASIS};
+use crane_model::data::section::boom_section_at;
 
 mod common;
 use common::{dims_at, hollow};
@@ -257,7 +257,7 @@ fn f32_and_f64_give_the_same_retained_frequencies() {
         .reduce(&THESIS_BASIS, 0.02)
         .expect("reduce f64");
     let built = CraneModel::<f32, 4>::build(&crane, MeshRefinement::THESIS, &THESIS_BASIS).expect("f32 model");
-    for (name, m32) in [("CraneModel::<f32>::build", built.modes), ("THESIS_MODES_F32", crane_model::thesis_modes::THESIS_MODES_F32)] {
+    for (name, m32) in [("CraneModel::<f32>::build", built.modes), ("THESIS_MODES_F32", crane_model::loads::thesis_modes::THESIS_MODES_F32)] {
         let mut worst = 0.0f64;
         for k in 0..4 {
             let (w64, w32) = (m64.omega_rad_s[k], m32.omega_rad_s[k] as f64);

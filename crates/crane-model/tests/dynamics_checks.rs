@@ -3,12 +3,12 @@
 //! computation, constraints, energy conservation, f32 against f64, the thesis's
 //! qualitative findings and time-step convergence.
 
-use crane_model::crane::CraneData;
-use crane_model::integrator::State;
-use crane_model::modal::{MeshRefinement, THESIS_BASIS};
+use crane_model::data::crane::CraneData;
+use crane_model::sim::integrator::State;
+use crane_model::structure::modal::{MeshRefinement, THESIS_BASIS};
 use crane_model::multibody::{CraneModel, FreeCoordinates, ThesisModel};
-use crane_model::profile::{ActuatorMotion, RampShape};
-use crane_model::simulation::{thesis_cases, Direction, Maneuver, SimulationOptions};
+use crane_model::data::profile::{ActuatorMotion, RampShape};
+use crane_model::sim::simulation::{thesis_cases, Direction, Maneuver, SimulationOptions};
 use crane_model::Real;
 use std::f64::consts::PI;
 

@@ -7,8 +7,8 @@
 //! third cantilever frequency by only ~3e-4), steel ρ = 7850 kg/m³, E = 2.1e11 Pa.
 //! Meshes: 20 equal elements (bending and axial frequency tests).
 
-use crane_model::fe::{BeamElement, BeamMesh, ElementMatrix, DOF_PER_NODE};
-use crane_model::modal::ModalAnalysis;
+use crane_model::structure::fe::{BeamElement, BeamMesh, ElementMatrix, DOF_PER_NODE};
+use crane_model::structure::modal::ModalAnalysis;
 use nalgebra::SMatrix;
 
 const LENGTH: f64 = 10.0;

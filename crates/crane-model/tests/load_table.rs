@@ -3,8 +3,8 @@
 //! anywhere in 0–90°, between the knots included (the load below 90°, where
 //! it is observable at all).
 
-use crane_model::load_model::{Affine, BoomState, HookLoadModel};
-use crane_model::load_table::{self, column, thesis_load_table, THESIS_LOAD_TABLE};
+use crane_model::loads::load_model::{Affine, BoomState, HookLoadModel};
+use crane_model::loads::load_table::{self, column, thesis_load_table, THESIS_LOAD_TABLE};
 use crane_model::multibody::CraneModel;
 
 /// The bound of issue 13 on the load and the rated load.
@@ -107,7 +107,7 @@ fn radius_and_tangent_through_the_table_match_eq_4_3() {
         let rad = deg.to_radians();
         let r = table.radius_m(rad as f32) as f64;
         assert!((r - model.radius_m(rad)).abs() < 1e-3, "{deg}°: {r}");
-        let terms = table.cycle_terms(crane_model::load_model::CycleQuery {
+        let terms = table.cycle_terms(crane_model::loads::load_model::CycleQuery {
             force_angle_rad: rad as f32,
             now: BoomState { angle_rad: rad as f32, rate_rad_s: 0.0 },
         });

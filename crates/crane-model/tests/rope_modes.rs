@@ -4,10 +4,10 @@
 //! the boom at the frequency of the boom loaded by a tip mass, conserving energy,
 //! statically indistinguishable from the thesis rope, and riding up with the tip.
 
-use crane_model::crane::CraneData;
-use crane_model::modal::{MeshRefinement, THESIS_BASIS};
+use crane_model::data::crane::CraneData;
+use crane_model::structure::modal::{MeshRefinement, THESIS_BASIS};
 use crane_model::multibody::ThesisModel;
-use crane_model::simulation::{thesis_cases, SimulationOptions};
+use crane_model::sim::simulation::{thesis_cases, SimulationOptions};
 
 fn model() -> ThesisModel<f64> {
     ThesisModel::<f64>::build(&CraneData::coles_mobile_930(), MeshRefinement::THESIS, &THESIS_BASIS).expect("thesis model")
@@ -292,15 +292,15 @@ fn thesis_rope_reproduces_the_numbers_of_the_code_before_rope_modes() {
     }
 }
 
-use crane_model::dense::Square;
-use crane_model::eigen::generalized_eigen;
-use crane_model::fe::{MAX_DOF, DOF_PER_NODE};
-use crane_model::integrator::State;
-use crane_model::modal::ModalAnalysis;
+use crane_model::structure::dense::Square;
+use crane_model::structure::eigen::generalized_eigen;
+use crane_model::structure::fe::{MAX_DOF, DOF_PER_NODE};
+use crane_model::sim::integrator::State;
+use crane_model::structure::modal::ModalAnalysis;
 use crane_model::multibody::FreeCoordinates;
-use crane_model::profile::{ActuatorMotion, RampShape};
-use crane_model::rope::{RopeChoice, RopeMode};
-use crane_model::simulation::{Maneuver, Program, Segment};
+use crane_model::data::profile::{ActuatorMotion, RampShape};
+use crane_model::multibody::rope::{RopeChoice, RopeMode};
+use crane_model::sim::simulation::{Maneuver, Program, Segment};
 use nalgebra::{SMatrix, SVector};
 type M5 = SMatrix<f64, 5, 5>;
 
@@ -493,7 +493,7 @@ fn at_rest_both_rope_modes_give_the_same_piston_force_and_jack_reaction() {
 fn held_rope_tension_in_the_start_ramp_is_the_load_riding_up_with_the_tip() {
     let base = model();
     let (load, deg0) = (3300.0, 40.0);
-    let mut m = Maneuver::thesis(load, 10.0, RampShape::Linear, crane_model::simulation::Direction::Up).expect("maneuver");
+    let mut m = Maneuver::thesis(load, 10.0, RampShape::Linear, crane_model::sim::simulation::Direction::Up).expect("maneuver");
     m.rope = RopeChoice::Held { length_m: None };
     let program = m.program().expect("program");
     let held = held_at(&base, deg0);

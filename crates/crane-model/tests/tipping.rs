@@ -1,8 +1,8 @@
 //! Issue 4: tipping and the lifting capacity (thesis §4.3.2, eqs. 4.2–4.3).
-use crane_model::load_model::BoomState;
-use crane_model::modal::{MeshRefinement, THESIS_BASIS};
+use crane_model::loads::load_model::BoomState;
+use crane_model::structure::modal::{MeshRefinement, THESIS_BASIS};
 use crane_model::multibody::ThesisModel;
-use crane_model::simulation::SimulationOptions;
+use crane_model::sim::simulation::SimulationOptions;
 use crane_model::CraneData;
 use nalgebra::Vector2;
 
@@ -125,8 +125,8 @@ fn dynamic_tipping_is_never_on_the_unsafe_side() {
 /// (the closed form) vs the Lagrange multiplier of the full 19-coordinate system.
 #[test]
 fn inertia_term_matches_the_multipliers() {
-    use crane_model::load_model::HookLoadModel;
-    use crane_model::profile::ActuatorMotion;
+    use crane_model::loads::load_model::HookLoadModel;
+    use crane_model::data::profile::ActuatorMotion;
     let m = ThesisModel { rope_kg_per_m: 1e-6, ..model() }; // 0 would make the swing singular
     for deg in [40.0f64, 50.0, 60.0, 70.0, 80.0] {
         let th = deg.to_radians();
@@ -153,7 +153,7 @@ fn inertia_term_matches_the_multipliers() {
 /// for that load, across the loads and angles of the chart.
 #[test]
 fn quadratic_piston_force_inverts_to_the_true_load() {
-    use crane_model::load_model::HookLoadModel;
+    use crane_model::loads::load_model::HookLoadModel;
     let m = model();
     let mut worst: f64 = 0.0;
     for deg in [20.0f64, 40.0, 60.0, 80.0] {

@@ -9,8 +9,9 @@ use limiter_drivers::{AlarmOutputs, ChannelMap, Mcp3208, Polarity};
 use moment_limiter::checks::FaultKind;
 use moment_limiter::io::{Channel, InputError, OutputCommand, OutputError, Outputs};
 use moment_limiter::clock::Ticks;
-use moment_limiter::limiter::{Fault, Limiter, LimiterConfig};
-use moment_limiter::rigid_reference::RigidCrane;
+use moment_limiter::cycle::{Limiter, LimiterConfig};
+use moment_limiter::fault::Fault;
+use moment_limiter::testing::rigid_reference::RigidCrane;
 use moment_limiter::state_machine::LimiterState;
 
 /// Works for `good` transactions (checked by the mock), then fails them all.

@@ -5,7 +5,7 @@
 //! residual r = F_meas − F_model(0) = force_offset + friction(direction). The
 //! learner averages r over the steady samples moving up (r_up) and down
 //! (r_down), using the very same signal chain as the limiter (feed it the
-//! [`Measurement`]s of a [`crate::limiter::Limiter`] run with
+//! [`Measurement`]s of a [`crate::cycle::Limiter`] run with
 //! [`Calibration::none`]).
 //!
 //! Only steady motion ([`SteadyMotion`]): the residual removes the boom's
@@ -40,10 +40,10 @@
 //! not observable from the force alone and are not learned (0); a
 //! technician may set them in the calibration file.
 
-use crane_model::load_model::HookLoadModel;
+use crane_model::loads::load_model::HookLoadModel;
 use crane_model::{ModelError, Real};
 
-use crate::limiter::Measurement;
+use crate::io::Measurement;
 use crate::load_estimate::{model_force_terms, Calibration, Direction, Friction};
 
 /// Why no calibration could be learned.

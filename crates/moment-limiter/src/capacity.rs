@@ -11,7 +11,7 @@
 //! crane, SPEC §1), and the optional manufacturer chart interpolated on the
 //! hook radius.
 
-use crane_model::load_model::{BoomState, CapacityTerms, HookLoadModel};
+use crane_model::loads::load_model::{BoomState, CapacityTerms, HookLoadModel};
 use crane_model::{ModelError, Real};
 
 /// Most points a manufacturer chart may have.
@@ -142,7 +142,7 @@ impl<T: Real> Capacity<T> {
     }
 
     /// The rating from the model's terms at the boom state
-    /// ([`crane_model::load_model::CycleTerms::capacity`]).
+    /// ([`crane_model::loads::load_model::CycleTerms::capacity`]).
     pub fn rating_from(&self, terms: &CapacityTerms<T>) -> Result<Rating<T>, CapacityError> {
         let jack = terms.jack_reaction;
         if !(jack.per_kg.is_finite() && jack.at_zero.is_finite()) {

@@ -30,7 +30,7 @@
 //! machine's FAULT recovery time (1 s of good cycles) runs as after any fault.
 //! The first cycle has no previous time and a step of 0.
 //!
-//! Recorded logs carry decimal seconds; [`crate::log_format`] converts them to
+//! Recorded logs carry decimal seconds; [`crate::tools::log_format`] converts them to
 //! microseconds exactly (from the digits, never through a float) and then to
 //! ticks with the same wrapping, so a log replayed with its times shifted by
 //! any whole number of microseconds gives the same events at the same samples.

@@ -7,7 +7,7 @@
 //! firmware drains it to non-volatile memory; the host prints it.
 
 use crate::clock::Ticks;
-use crate::limiter::Fault;
+use crate::fault::Fault;
 use crate::state_machine::LimiterState;
 
 /// What an event records.

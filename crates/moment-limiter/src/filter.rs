@@ -18,7 +18,7 @@
 //! The limiter runs the force and the angle through the same filter, so the
 //! two stay aligned in time whatever the cut-off, and takes the angle's rate
 //! and acceleration as differences of the filtered angle (see
-//! [`crate::limiter::LimiterConfig::standard`] for the chosen 4 stages at
+//! [`crate::cycle::LimiterConfig::standard`] for the chosen 4 stages at
 //! 1.2 Hz: delay 0.53 s; gain 0.014 at 3.3 Hz and 0.007 at 4 Hz, where the
 //! loaded and the unloaded boom's first bending oscillation are).
 

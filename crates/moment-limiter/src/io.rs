@@ -5,6 +5,12 @@
 //! implement them with plain structs, and the replay tool feeds recorded values
 //! straight into the limiter without them.
 
+use crane_model::loads::load_model::BoomState;
+use crane_model::Real;
+
+use crate::clock::Ticks;
+use crate::load_estimate::{Direction, Friction};
+
 /// The three analog inputs of the limiter.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Channel {
@@ -75,4 +81,58 @@ pub trait Outputs {
     /// moment-increasing motions cut if they fail part-way (fail-safe wiring:
     /// a de-energised cut-off relay blocks the motion).
     fn apply(&mut self, command: OutputCommand) -> Result<(), OutputError>;
+}
+
+/// One sample of a recorded log, in physical units.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Frame<T> {
+    /// Time on the limiter's clock ([`crate::clock`]).
+    pub t: Ticks,
+    /// Piston-side pressure p1 (bar).
+    pub p1_bar: T,
+    /// Rod-side pressure p2 (bar).
+    pub p2_bar: T,
+    /// Boom angle (degrees from horizontal).
+    pub boom_angle_deg: T,
+}
+
+/// The signals after conversion and filtering.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Measurement<T> {
+    /// Filtered piston force (N), transducer offsets removed.
+    pub piston_force_n: T,
+    /// Boom angle now (degrees): the filtered reading, pendulum offset
+    /// removed, advanced by rate × (sensor lag + filter delay).
+    pub boom_angle_deg: T,
+    /// Filtered angle rate (degrees per second).
+    pub rate_deg_s: T,
+    /// Angular acceleration (degrees per second²): the second difference of
+    /// the filtered angle, at the time of the filtered force.
+    pub accel_deg_s2: T,
+    /// Time the boom has been moving in `direction` without interruption (s);
+    /// 0 when still.
+    pub moving_for_s: T,
+    /// Direction of motion.
+    pub direction: Direction,
+    /// The friction in the force (see [`crate::load_estimate`]).
+    pub friction: Friction,
+    /// The share of the last motion's friction still in the force of a
+    /// still boom (1 at the stop, decaying as the seals release).
+    pub static_friction_share: T,
+    /// The boom state at the time of the filtered force (force and angle
+    /// both through the sensor's lag and the filter): what the load estimate
+    /// hands to the model.
+    pub boom: BoomState<T>,
+    /// The boom state now: what the rated load is computed at.
+    pub boom_now: BoomState<T>,
+    /// tan of the load swing the paid-out-rope hypothesis predicts at the
+    /// time of the filtered force (a diagnostic; 0 without the swing geometry).
+    pub tan_swing: T,
+}
+
+impl<T: Real> Measurement<T> {
+    /// The angular acceleration in rad/s², as the model takes it.
+    pub fn accel_rad_s2(&self) -> T {
+        self.accel_deg_s2 * T::pi() / T::lit(180.0)
+    }
 }

@@ -10,7 +10,7 @@
 //!
 //! so W solves F_model(W) = F_meas − force_offset − friction(direction). The
 //! model's F_model is exactly quadratic in W (the boom's sag grows with the
-//! load, [`crane_model::load_model::Quadratic`]); its slope per kg is close to
+//! load, [`crane_model::loads::load_model::Quadratic`]); its slope per kg is close to
 //! constant, and a load for which the slope at W = 0 is not positive, or which
 //! no load on the rising branch explains, is not observable (a FAULT).
 //!
@@ -19,7 +19,7 @@
 //! pressure settles to what holds the load), and before any motion there is
 //! none. The limiter removes the last motion's friction times a share that
 //! is 1 when the filtered rate says the boom stopped and decays with
-//! [`crate::limiter::LimiterConfig::seal_release_s`] (the filtered force
+//! [`crate::cycle::LimiterConfig::seal_release_s`] (the filtered force
 //! lags the stop by as much as the filtered rate does). Taking half the
 //! sliding friction for ever (the old rule) read a 30 % load at 80° after
 //! raising at 0.64–0.87 of itself: half the friction is a large share of a
@@ -43,7 +43,7 @@
 //! with the rate, the model held the swing angle fixed and carried the load
 //! along: −2 % on the load in the 10 s moves, measured on the flexible model.)
 
-use crane_model::load_model::{BoomState, HookLoadModel, LoadTerms, Quadratic};
+use crane_model::loads::load_model::{BoomState, HookLoadModel, LoadTerms, Quadratic};
 use crane_model::{ModelError, Real};
 
 /// Direction of boom motion, from the filtered angle rate.
@@ -258,7 +258,7 @@ pub fn model_force_terms<T: Real, M: HookLoadModel<T>>(
 
 /// Hook load (kg) from the filtered measured force (see the module doc).
 /// The force must already have the transducer offsets removed; `terms` are
-/// the model's at the force's instant ([`crane_model::load_model::CycleTerms::load`]),
+/// the model's at the force's instant ([`crane_model::loads::load_model::CycleTerms::load`]),
 /// `accel_rad_s2` the boom's angular acceleration then, and `tan_swing`
 /// tan φ of the load swing (0: hanging straight).
 pub fn estimate_load_kg<T: Real>(

@@ -28,7 +28,7 @@
 //!   the price of not cutting an unloaded crane in every fast lowering ramp.
 //! - A transducer that reads too low but still positive is not caught here
 //!   (no bound on a positive load can tell); the calibration schema's bounds
-//!   ([`crate::config_file`]) and the range checks ([`crate::checks`]) are
+//!   ([`crate::tools::config_file`]) and the range checks ([`crate::checks`]) are
 //!   the defences there.
 
 use crane_model::Real;

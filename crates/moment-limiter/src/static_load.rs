@@ -93,7 +93,7 @@
 //! 100 Hz each), as many solutions of a quadratic and two filter stages;
 //! no heap, fixed loops.
 
-use crane_model::load_model::Quadratic;
+use crane_model::loads::load_model::Quadratic;
 use crane_model::Real;
 
 use crate::held_pendulum::HeldPendulum;

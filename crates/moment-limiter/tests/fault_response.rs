@@ -7,11 +7,13 @@ mod common;
 use common::SimSensors;
 use moment_limiter::checks::FaultKind;
 use moment_limiter::event_log::EventKind;
-use moment_limiter::fault_injector::{FaultInjector, FrameFaultInjector, InjectedFault};
+use moment_limiter::testing::fault_injector::{FaultInjector, FrameFaultInjector, InjectedFault};
 use moment_limiter::io::{Channel, InputError, OutputCommand, OutputError, Outputs};
 use moment_limiter::clock::{ClockFault, Ticks};
-use moment_limiter::limiter::{Fault, Frame, Limiter, LimiterConfig, StepReport};
-use moment_limiter::rigid_reference::RigidCrane;
+use moment_limiter::cycle::{Limiter, LimiterConfig, StepReport};
+use moment_limiter::fault::Fault;
+use moment_limiter::io::Frame;
+use moment_limiter::testing::rigid_reference::RigidCrane;
 use moment_limiter::state_machine::LimiterState;
 
 const PERIOD_US: u32 = 10_000;

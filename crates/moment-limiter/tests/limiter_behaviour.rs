@@ -5,9 +5,9 @@ mod common;
 
 use common::Manoeuvre;
 use moment_limiter::calibration::{CalibrationLearner, SteadyMotion};
-use moment_limiter::limiter::{Limiter, LimiterConfig};
+use moment_limiter::cycle::{Limiter, LimiterConfig};
 use moment_limiter::load_estimate::Calibration;
-use moment_limiter::rigid_reference::RigidCrane;
+use moment_limiter::testing::rigid_reference::RigidCrane;
 use moment_limiter::state_machine::LimiterState;
 
 fn limiter(cal: Calibration<f64>) -> Limiter<f64, RigidCrane<f64>> {
@@ -147,7 +147,7 @@ fn f32_and_f64_agree_on_a_short_replay() {
     let mut l32 = Limiter::new(RigidCrane::<f32>::coles_930(), config::<f32>()).unwrap();
     let mut state_mismatches = 0;
     for f in m.frames() {
-        let f32_frame = moment_limiter::limiter::Frame {
+        let f32_frame = moment_limiter::io::Frame {
             t: f.t,
             p1_bar: f.p1_bar as f32,
             p2_bar: f.p2_bar as f32,

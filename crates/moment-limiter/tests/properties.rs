@@ -3,8 +3,9 @@
 mod common;
 
 use moment_limiter::clock::Ticks;
-use moment_limiter::limiter::{Frame, Limiter, LimiterConfig};
-use moment_limiter::rigid_reference::RigidCrane;
+use moment_limiter::cycle::{Limiter, LimiterConfig};
+use moment_limiter::io::Frame;
+use moment_limiter::testing::rigid_reference::RigidCrane;
 use moment_limiter::state_machine::{CycleInput, LimiterState, StateMachine, Thresholds};
 use proptest::prelude::*;
 

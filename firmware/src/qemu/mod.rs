@@ -21,9 +21,9 @@ pub mod budgets;
 pub mod semihosting;
 
 use core::fmt::Write;
-use moment_limiter::limiter::{Limiter, LimiterConfig};
-use moment_limiter::log_format::{LogError, LogErrorKind, LogParser};
-use moment_limiter::replay::{self, Replay, ReplayEvent, ReplaySummary};
+use moment_limiter::cycle::{Limiter, LimiterConfig};
+use moment_limiter::tools::log_format::{LogError, LogErrorKind, LogParser};
+use moment_limiter::tools::replay::{self, Replay, ReplayEvent, ReplaySummary};
 use semihosting::{FileError, HostFile, HostWriter, LineReader};
 
 /// Exit code: the input (arguments, log or calibration) could not be read.
@@ -193,7 +193,7 @@ pub fn run(syst: cortex_m::peripheral::SYST) -> u8 {
                 return EXIT_INPUT;
             }
         };
-        match moment_limiter::config_file::parse_calibration(text) {
+        match moment_limiter::tools::config_file::parse_calibration(text) {
             Ok(calibration) => config.calibration = calibration,
             Err(e) => {
                 let _ = writeln!(err, "error: calibration {path} refused: {e}");

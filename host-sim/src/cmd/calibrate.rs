@@ -11,7 +11,7 @@
 //! counted. A log with a `true_load_kg` column that is not 0 is refused.
 //!
 //! The file is written in the calibration schema
-//! (`moment_limiter::config_file`, version 1) and only if every value is
+//! (`moment_limiter::tools::config_file`, version 1) and only if every value is
 //! within its physical bounds, so the replay and the firmware accept it.
 //!
 //! Exit codes: 0 written; 1 a log could not be read, was not unloaded, had
@@ -23,10 +23,11 @@ use std::path::PathBuf;
 
 use anyhow::Context as _;
 use moment_limiter::calibration::CalibrationLearner;
-use moment_limiter::limiter::{Fault, Limiter, LimiterConfig};
-use moment_limiter::log_format::LogParser;
+use moment_limiter::cycle::{Limiter, LimiterConfig};
+use moment_limiter::fault::Fault;
+use moment_limiter::tools::log_format::LogParser;
 
-use moment_limiter::config_file;
+use moment_limiter::tools::config_file;
 
 use super::replay::read_line;
 

@@ -30,13 +30,14 @@
 //! re-makes its log. `--shard K/N` runs the scenarios i with i mod N = K − 1, so
 //! shards on several machines make up the whole campaign.
 
-use super::synth::synth_core::{self, FrictionLaw, PendulumSensor, SensorModel, SynthRow};
+use crate::synth_core::{self, FrictionLaw, PendulumSensor, SensorModel, SynthRow};
 use crate::model::thesis_model;
 use anyhow::{bail, Context, Result};
 use crane_model::multibody::ThesisModel;
-use crane_model::profile::RampShape;
-use crane_model::rope::RopeChoice;
-use crane_model::simulation::{Direction, Maneuver, Outputs, Program, Segment, SimulationOptions};
+use crane_model::data::profile::RampShape;
+use crane_model::multibody::rope::RopeChoice;
+use crane_model::sim::integrator::NewtonStart;
+use crane_model::sim::simulation::{Direction, Maneuver, Outputs, Program, Segment, SimulationOptions};
 use rayon::prelude::*;
 use serde::Serialize;
 use std::io::Write;
@@ -357,9 +358,10 @@ impl Scenario {
 /// to adapt.
 mod limiter_adapter {
     use super::synth_core::SynthRow;
-    use crane_model::thesis_modes::thesis_load_model_f32;
+    use crane_model::loads::thesis_modes::thesis_load_model_f32;
     use moment_limiter::calibration::CalibrationLearner;
-    use moment_limiter::limiter::{Frame, Limiter, LimiterConfig};
+    use moment_limiter::cycle::{Limiter, LimiterConfig};
+use moment_limiter::io::Frame;
     use moment_limiter::load_estimate::Calibration;
     use moment_limiter::clock::Ticks;
     use moment_limiter::state_machine::LimiterState;
@@ -770,7 +772,12 @@ fn run_campaign(args: &CampaignArgs, progress: bool) -> Result<(Summary, Vec<Str
     if !(args.step_ms >= 0.5 && args.step_ms <= 10.0 && (10.0 / args.step_ms - (10.0 / args.step_ms).round()).abs() < 1e-9) {
         bail!("--step-ms must divide the 10 ms log period and lie in [0.5, 10]");
     }
-    let mut options = SimulationOptions { step_s: args.step_ms * 1e-3, ..SimulationOptions::for_type::<f64>() };
+    // The same Newton start as `synth`, so a scenario re-made from its flags is the same log.
+    let mut options = SimulationOptions {
+        step_s: args.step_ms * 1e-3,
+        newton_start: NewtonStart::Extrapolated,
+        ..SimulationOptions::for_type::<f64>()
+    };
     options.output_every = (10.0 / args.step_ms).round() as usize;
     let dt = options.output_every as f64 * options.step_s;
     // Synthesis needs the piston force only (inverse dynamics along the actuator).

@@ -1,6 +1,6 @@
 //! `crane-sim modes [--json]`: the boom's mass and modes (SPEC §5).
 
-use crane_model::modal::{MeshRefinement, ModalAnalysis, THESIS_BASIS};
+use crane_model::structure::modal::{MeshRefinement, ModalAnalysis, THESIS_BASIS};
 use crane_model::CraneData;
 use serde::Serialize;
 use std::io::Write;

@@ -1,7 +1,7 @@
 //! `crane-sim replay LOG.csv [--calibration CAL.json] [--json] [--trace FILE.csv]`
 //!
 //! Runs a recorded sensor log (SPEC §5) through the limiter core, the same
-//! `moment_limiter::replay::Replay` the firmware runs, in `f32`, and prints
+//! `moment_limiter::tools::replay::Replay` the firmware runs, in `f32`, and prints
 //! with the same formatters, so the output is the firmware's.
 //!
 //! Output: without `--json`, one timeline line per state change as it happens
@@ -17,7 +17,7 @@
 //! on, so the exit code still says 0 or 2 (`crate::stdout`).
 //!
 //! The calibration file is read with the limiter's own reader
-//! (`moment_limiter::config_file`, the firmware's too). Without
+//! (`moment_limiter::tools::config_file`, the firmware's too). Without
 //! `--calibration` a note goes to stderr and the JSON says
 //! `"calibrated":false`.
 //!
@@ -32,12 +32,12 @@ use std::io::{BufRead, BufReader, BufWriter, Write as _};
 use std::path::{Path, PathBuf};
 
 use anyhow::Context as _;
-use crane_model::load_model::HookLoadModel;
-use moment_limiter::config_file;
-use moment_limiter::limiter::{Limiter, LimiterConfig};
+use crane_model::loads::load_model::HookLoadModel;
+use moment_limiter::tools::config_file;
+use moment_limiter::cycle::{Limiter, LimiterConfig};
 use moment_limiter::load_estimate::Calibration;
-use moment_limiter::log_format::{LogError, LogErrorKind, LogParser, Record};
-use moment_limiter::replay::{self, Replay, ReplayEvent};
+use moment_limiter::tools::log_format::{LogError, LogErrorKind, LogParser, Record};
+use moment_limiter::tools::replay::{self, Replay, ReplayEvent};
 
 /// Arguments of `crane-sim replay`.
 #[derive(clap::Args, Debug)]
@@ -66,11 +66,11 @@ pub struct ReplayArgs {
 /// constants the firmware is built with, so `crane-sim replay` and the firmware
 /// run the same arithmetic and their timelines agree sample for sample.
 pub fn crane_load_model() -> impl HookLoadModel<f32> {
-    crane_model::thesis_modes::thesis_load_model_f32()
+    crane_model::loads::thesis_modes::thesis_load_model_f32()
 }
 
 /// Reads and checks a calibration file with the limiter's own reader
-/// (`moment_limiter::config_file`, the one the firmware uses): every key
+/// (`moment_limiter::tools::config_file`, the one the firmware uses): every key
 /// required, unknown keys refused, every value within its physical bounds.
 pub fn load_calibration<T: crane_model::Real>(path: &Path) -> anyhow::Result<Calibration<T>> {
     let bytes = std::fs::read(path)

@@ -10,7 +10,7 @@ use crate::rating::limiter_capacity;
 use crate::replay_report::{html_escape, replay_file, write_replay_report, ReplaySource, PAGE_STYLE};
 use anyhow::{Context, Result};
 use std::path::Path;
-use crane_model::simulation::{thesis_cases, SimulationOptions};
+use crane_model::sim::simulation::{thesis_cases, SimulationOptions};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use std::fmt::Write as _;

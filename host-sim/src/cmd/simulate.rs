@@ -4,9 +4,9 @@
 use crate::model::thesis_model;
 use crate::plot::{write_figure, Panel, Series, PALETTE};
 use anyhow::{bail, Context, Result};
-use crane_model::profile::RampShape;
-use crane_model::rope::RopeChoice;
-use crane_model::simulation::{
+use crane_model::data::profile::RampShape;
+use crane_model::multibody::rope::RopeChoice;
+use crane_model::sim::simulation::{
     thesis_cases, Direction, InitialState, Maneuver, Program, Sample, Segment, SimulationOptions,
 };
 use crate::maneuver_file;
@@ -258,7 +258,7 @@ pub fn program(args: &ManeuverArgs) -> Result<(String, Program)> {
 pub fn run_program(
     p: &Program,
     options: &SimulationOptions,
-) -> Result<(Vec<Sample<f64>>, crane_model::simulation::RunSummary<f64>)> {
+) -> Result<(Vec<Sample<f64>>, crane_model::sim::simulation::RunSummary<f64>)> {
     let model = thesis_model()?;
     let mut samples = Vec::new();
     let summary = model
@@ -274,7 +274,7 @@ pub fn run_program(
 pub fn run_maneuver(
     m: &Maneuver,
     options: &SimulationOptions,
-) -> Result<(Vec<Sample<f64>>, crane_model::simulation::RunSummary<f64>)> {
+) -> Result<(Vec<Sample<f64>>, crane_model::sim::simulation::RunSummary<f64>)> {
     let model = thesis_model()?;
     let mut samples = Vec::new();
     let summary = model

@@ -9,20 +9,15 @@
 //! with noise and quantization; and the true hook load as the last column.
 //! Any maneuver of `simulate` (rope modes, luffs, lift-off, maneuver files).
 
-//! The sensor model itself is in `host-sim/src/synth_core.rs` (shared with the
+//! The sensor model itself is in [`crate::synth_core`] (shared with the
 //! in-process acceptance tests); this module is its command line.
 
 use super::simulate::{program, DirectionArg, ManeuverArgs};
 use crate::model::thesis_model;
 use anyhow::{bail, Context, Result};
-use synth_core::{FrictionLaw, PendulumSensor, SensorModel};
+use crate::synth_core::{self, FrictionLaw, PendulumSensor, SensorModel};
 use std::io::Write;
 use std::path::PathBuf;
-
-/// The log synthesis shared with `host-sim/tests/limiter_acceptance.rs`.
-#[path = "../synth_core.rs"]
-#[allow(dead_code)] // `SynthRow::truth` and `true_rate_deg_s` are for the tests.
-pub mod synth_core;
 
 /// Friction law on the command line.
 #[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]

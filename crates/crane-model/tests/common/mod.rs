@@ -4,8 +4,8 @@
 //! rectangle).
 #![allow(dead_code)]
 
-use crane_model::crane::BoomData;
-use crane_model::section::OctagonDims;
+use crane_model::data::crane::BoomData;
+use crane_model::data::section::OctagonDims;
 
 /// Area and second moment (about the horizontal centroidal axis) of a convex
 /// polygon by the shoelace formulas: A = ½Σ(xᵢyᵢ₊₁ − xᵢ₊₁yᵢ),

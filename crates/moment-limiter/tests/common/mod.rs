@@ -2,14 +2,14 @@
 //! with the rigid stand-in model, and a simulated sensor front end.
 #![allow(dead_code)]
 
-use crane_model::load_model::{BoomState, HookLoadModel};
+use crane_model::loads::load_model::{BoomState, HookLoadModel};
 use moment_limiter::conversion::SensorConversion;
-use moment_limiter::fault_injector::Rng;
+use moment_limiter::testing::fault_injector::Rng;
 use moment_limiter::io::{Channel, InputError, SensorInputs};
 use moment_limiter::clock::Ticks;
-use moment_limiter::limiter::Frame;
+use moment_limiter::io::Frame;
 use moment_limiter::piston_force::p1_bar_for_force;
-use moment_limiter::rigid_reference::RigidCrane;
+use moment_limiter::testing::rigid_reference::RigidCrane;
 
 /// One luffing manoeuvre: hold, cycloidal move, hold.
 #[derive(Debug, Clone, Copy)]

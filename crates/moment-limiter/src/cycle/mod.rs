@@ -1,0 +1,411 @@
+//! The per-cycle step that ties the stages together (SPEC §4, default 100 Hz).
+//!
+//! One cycle, in order (each stage is a module of this crate):
+//! 1. **read and check**: counts → loop current → bar / degrees
+//!    ([`crate::conversion`]), instant checks ([`crate::units`]), history
+//!    checks ([`crate::checks`]);
+//! 2. **piston force** (eq. 4.1, [`crate::piston_force`]) and low-pass filters
+//!    on force and angle ([`crate::filter`]); angle rate and direction;
+//! 3. **hook load** from the model's piston force ([`crate::load_estimate`]),
+//!    the static hook mass whatever the rope ([`crate::static_load`]);
+//! 4. **rated load** from the model's affine jack reaction
+//!    ([`crate::capacity`]);
+//! 5. **utilization and state** ([`crate::state_machine`]), outputs;
+//! 6. **event log** ([`crate::event_log`]).
+//!
+//! Two entries share everything after stage 1: [`Limiter::step_counts`] for
+//! the hardware (raw ADC counts through [`SensorInputs`]) and
+//! [`Limiter::step_frame`] for recorded logs already in physical units (the
+//! replay), which are range-checked exactly as the firmware would: a value out
+//! of range in a log is a sensor FAULT (SPEC §5).
+//!
+//! The first cycle is the **power-up self-test**: it must read all three
+//! sensors without a fault; its result is logged. Until that cycle the
+//! limiter reports FAULT, and [`Limiter::power_up`] drives the fail-safe
+//! command (which doubles as the lamp test).
+//!
+//! A model or capacity error, a clock that stalls, jumps or goes backwards
+//! ([`crate::clock`]), a load estimate no hook can give
+//! ([`crate::negative_load`]) and an output failure are faults too: whenever the limiter cannot tell
+//! that the crane is safe, it cuts.
+//!
+//! Time is an integer [`Ticks`] count (µs, wrapping); the float step the
+//! filters see is computed from the integer difference ([`crate::clock`]).
+//!
+//! The cycle's parts: [`config`] (what it is built with), [`report`] (what one
+//! cycle returns), `signal_chain` (reading, filtering and the rate: stages 1–2);
+//! the load and rating (stages 3–4) and the sequencing are here.
+
+pub mod config;
+pub mod report;
+mod signal_chain;
+
+pub use config::{ConfigError, LimiterConfig, EVENT_LOG_LEN, UTILIZATION_CEILING};
+pub use report::{Estimate, StepReport};
+
+use crane_model::loads::load_model::{CycleQuery, HookLoadModel};
+use crane_model::Real;
+
+use crate::capacity::CapacityError;
+use crate::checks::{FaultKind, PlausibilityMonitor, SensorFault};
+use crate::clock::{Clock, Ticks};
+use crate::event_log::{Event, EventKind, EventLog};
+use crate::fault::Fault;
+use crate::filter::LowPass;
+use crate::io::{Channel, Frame, Measurement, OutputCommand, OutputError, Outputs, SensorInputs};
+use crate::load_estimate::{load_equation, Direction, DirectionDetector, EstimateError};
+use crate::negative_load::NegativeLoadMonitor;
+use crate::state_machine::{CycleInput, LimiterState, StateMachine};
+use crate::static_load::{LoadTerms as BankTerms, StaticLoadBank};
+use crate::units::{BoomAngle, PressureBar};
+
+
+
+
+/// Time after a restart of the signal chain (a fault) during which a moving
+/// boom's estimate is no reading (s): three delays of the standard filter
+/// and the sensor lag (0.64 s), when its start-up transient has died out.
+pub const SETTLE_S: f64 = 2.0;
+
+/// Checked readings of one cycle.
+type Readings<T> = (PressureBar<T>, PressureBar<T>, BoomAngle<T>);
+
+/// The load moment limiter: configuration, model and running state.
+///
+/// ## Time alignment
+///
+/// The load is W = (F − corrections − F_model,0(θ))/per_kg(θ): the force and
+/// the angle must belong to the same instant, or the slope of F_model over θ
+/// (≈ 2 kN/° unloaded, ≈ 10 kN/° with 8 t at 60°) turns an angle error into a
+/// load error. At a steady rate ω the filtered force lags the boom by the
+/// filter's group delay d (≈ 4τ = 0.53 s for 4 stages at 1.2 Hz), and the
+/// filtered angle by
+/// d plus the angle sensor's own lag (the pendulum's 2ζ/ω_n, 0.111 s): left
+/// alone, the model was evaluated 0.111 s × 4.3 °/s ≈ 0.48° away from the
+/// force's angle, ≈ 1 kN of error unloaded. Advancing the angle by
+/// ω × lag aligned the angle but not the acceleration, whose inertia terms
+/// (the boom's J·θ̈ and a held load riding up with the tip) then came 0.11 s
+/// late: +13 % on a 90 % load in a 0.5 s start ramp. So the force goes
+/// through a first-order lag of the sensor's lag too, and force, angle, rate
+/// and acceleration all stand for t − lag − d (0.11 s more delay on a
+/// lift-off). The rated load takes the angle advanced by ω × (sensor lag +
+/// d) (the present instant: lowering, the rated load falls, and it must not
+/// be read late). The same filter on force and angle keeps both delays equal
+/// whatever the cut-off.
+#[derive(Debug, Clone)]
+pub struct Limiter<T, M> {
+    model: M,
+    config: LimiterConfig<T>,
+    monitor: PlausibilityMonitor<T>,
+    /// The angle sensor's lag, put on the force too (see "Time alignment").
+    force_lag: Option<LowPass<T>>,
+    force_filter: LowPass<T>,
+    angle_filter: LowPass<T>,
+    static_friction_share: T,
+    /// Time since the signal chain restarted (s), while under [`SETTLE_S`].
+    since_restart_s: Option<T>,
+    previous_angle_deg: Option<T>,
+    previous_rate_deg_s: Option<T>,
+    moving_for_s: T,
+    bank: Option<StaticLoadBank<T>>,
+    /// Time the bank has not been advanced (s): the faulted cycles since
+    /// its last update.
+    bank_idle_s: T,
+    direction: DirectionDetector<T>,
+    machine: StateMachine<T>,
+    log: EventLog<T, EVENT_LOG_LEN>,
+    clock: Clock<T>,
+    negative_load: NegativeLoadMonitor<T>,
+    state: Option<LimiterState>,
+    output_failed: bool,
+}
+
+impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
+    /// A limiter that has not run its self-test yet (it reports FAULT).
+    pub fn new(model: M, config: LimiterConfig<T>) -> Result<Self, ConfigError> {
+        config.validate()?;
+        Ok(Self {
+            monitor: PlausibilityMonitor::new(config.plausibility),
+            force_lag: (config.angle_sensor_lag_s > T::lit(0.0))
+                .then(|| LowPass::new(T::lit(1.0) / (T::two_pi() * config.angle_sensor_lag_s), 1)),
+            force_filter: LowPass::new(config.filter_hz, config.filter_stages),
+            static_friction_share: T::lit(1.0),
+            since_restart_s: None,
+            angle_filter: LowPass::new(config.filter_hz, config.filter_stages),
+            previous_angle_deg: None,
+            previous_rate_deg_s: None,
+            moving_for_s: T::lit(0.0),
+            bank: config.swing.map(StaticLoadBank::new),
+            bank_idle_s: T::lit(0.0),
+            direction: DirectionDetector::new(config.direction),
+            machine: StateMachine::new(config.thresholds),
+            log: EventLog::new(),
+            clock: Clock::new(config.clock),
+            negative_load: NegativeLoadMonitor::new(config.negative_load),
+            state: None,
+            output_failed: false,
+            model,
+            config,
+        })
+    }
+
+    /// The crane model.
+    pub fn model(&self) -> &M {
+        &self.model
+    }
+
+    /// The configuration.
+    pub fn config(&self) -> &LimiterConfig<T> {
+        &self.config
+    }
+
+    /// The event log.
+    pub fn events(&self) -> &EventLog<T, EVENT_LOG_LEN> {
+        &self.log
+    }
+
+    /// Mutable event log (to drain it to storage).
+    pub fn events_mut(&mut self) -> &mut EventLog<T, EVENT_LOG_LEN> {
+        &mut self.log
+    }
+
+    /// Present state (FAULT before the first cycle).
+    pub fn state(&self) -> LimiterState {
+        self.state.unwrap_or(LimiterState::Fault)
+    }
+
+    /// Power-up: drives the fail-safe command (motions cut, lamps on: the lamp
+    /// test) until the first cycle decides otherwise.
+    pub fn power_up<O: Outputs>(&mut self, outputs: &mut O) -> Result<(), OutputError> {
+        let r = outputs.apply(OutputCommand::FAIL_SAFE);
+        if r.is_err() {
+            self.output_failed = true;
+        }
+        r
+    }
+
+    /// One hardware cycle: reads the counts, steps, drives the outputs. An
+    /// output failure makes the next cycles FAULT (the outputs are wired so
+    /// that a failed driver leaves the motions cut).
+    // A named function in every image: scripts/check-cycle-image.sh walks
+    // the call graph from it (no soft float, no panic in the cycle).
+    #[inline(never)]
+    pub fn cycle<S: SensorInputs, O: Outputs>(
+        &mut self,
+        now: Ticks,
+        inputs: &mut S,
+        outputs: &mut O,
+    ) -> StepReport<T> {
+        let report = self.step_counts(now, inputs);
+        self.output_failed = outputs.apply(report.command).is_err();
+        report
+    }
+
+    /// One cycle from raw ADC counts (the firmware's entry).
+    pub fn step_counts<S: SensorInputs>(&mut self, now: Ticks, inputs: &mut S) -> StepReport<T> {
+        let readings = self.read_counts(inputs);
+        self.step_readings(now, readings)
+    }
+
+    /// One cycle from a recorded frame in physical units (the replay's entry).
+    // Named in every image, as `cycle` (scripts/check-cycle-image.sh).
+    #[inline(never)]
+    pub fn step_frame(&mut self, frame: &Frame<T>) -> StepReport<T> {
+        let fault = |channel: Channel| move |kind: FaultKind| SensorFault { channel, kind };
+        let readings = PressureBar::new(frame.p1_bar)
+            .map_err(fault(Channel::PistonSidePressure))
+            .and_then(|p1| {
+                let p2 = PressureBar::new(frame.p2_bar).map_err(fault(Channel::RodSidePressure))?;
+                let a = BoomAngle::new(frame.boom_angle_deg).map_err(fault(Channel::BoomAngle))?;
+                Ok((p1, p2, a))
+            });
+        self.step_readings(frame.t, readings)
+    }
+
+    /// Stages 2–6, shared by both entries.
+    fn step_readings(
+        &mut self,
+        t: Ticks,
+        readings: Result<Readings<T>, SensorFault>,
+    ) -> StepReport<T> {
+        // Clock: the step comes from the integer difference; a stalled,
+        // jumping or backwards clock is a fault (the step is then 0).
+        let clock = self.clock.advance(t);
+        let dt_s = *clock.as_ref().unwrap_or(&T::lit(0.0));
+
+        // Stage 1 (history checks) and stages 2–4.
+        let mut measurement = None;
+        let mut estimate = None;
+        let fault = if let Err(c) = clock {
+            Some(Fault::Clock(c))
+        } else if self.output_failed {
+            Some(Fault::Output)
+        } else {
+            None
+        };
+        let fault = match (fault, readings) {
+            (Some(f), _) => {
+                self.restart_signal_chain();
+                Some(f)
+            }
+            (None, Err(sensor)) => {
+                self.restart_signal_chain();
+                Some(Fault::Sensor(sensor))
+            }
+            (None, Ok((p1, p2, angle))) => {
+                match self
+                    .monitor
+                    .check([p1.bar(), p2.bar(), angle.degrees()], dt_s)
+                {
+                    Err(sensor) => {
+                        self.restart_signal_chain();
+                        Some(Fault::Sensor(sensor))
+                    }
+                    Ok(()) => {
+                        let m = self.measure(p1, p2, angle, dt_s);
+                        measurement = Some(m);
+                        // After a restart the filters start settled: for a
+                        // moving boom their start-up reads as an acceleration
+                        // the force never had. Not a reading until it passed.
+                        let settling = self.settling(&m, dt_s);
+                        match self.assess(&m) {
+                            Ok(e) => {
+                                estimate = Some(e);
+                                // A load no hook can give is no reading.
+                                let negative = self
+                                    .negative_load
+                                    .implausible(e.load_kg, m.boom.angle_rad, dt_s);
+                                if negative {
+                                    Some(Fault::ImplausibleLoad)
+                                } else {
+                                    settling.then_some(Fault::Settling)
+                                }
+                            }
+                            Err(f) => {
+                                self.negative_load.reset();
+                                Some(f)
+                            }
+                        }
+                    }
+                }
+            }
+        };
+
+        if measurement.is_none() {
+            self.bank_idle_s += dt_s;
+        }
+
+        // Stage 5.
+        let input = match (&fault, &estimate) {
+            (None, Some(e)) => CycleInput::Utilization(e.utilization),
+            _ => CycleInput::Fault,
+        };
+        let state = self.machine.update(dt_s, input);
+
+        // Stage 6: self-test on the first cycle, then every state change.
+        let event = |kind| Event {
+            t,
+            kind,
+            boom_angle_deg: measurement.map(|m| m.boom_angle_deg),
+            load_kg: estimate.map(|e| e.load_kg),
+            utilization: estimate.map(|e| e.utilization),
+        };
+        if self.state.is_none() {
+            self.log.push(event(match fault {
+                None => EventKind::SelfTestPassed,
+                Some(f) => EventKind::SelfTestFailed(f),
+            }));
+        }
+        if self.state != Some(state) {
+            let cause = if state == LimiterState::Fault {
+                fault
+            } else {
+                None
+            };
+            self.log.push(event(EventKind::Entered(state, cause)));
+        }
+        self.state = Some(state);
+
+        StepReport {
+            t,
+            state,
+            command: state.command(),
+            measurement,
+            estimate,
+            fault,
+        }
+    }
+
+    /// `true` while the signal chain restarted less than [`SETTLE_S`] ago
+    /// and the boom moves (a still boom's start is its true history).
+    fn settling(&mut self, m: &Measurement<T>, dt_s: T) -> bool {
+        let Some(t) = self.since_restart_s else {
+            return false;
+        };
+        let t = t + dt_s;
+        self.since_restart_s = (t < T::lit(SETTLE_S)).then_some(t);
+        self.since_restart_s.is_some() && m.direction != Direction::Still
+    }
+
+    /// Stages 3–4: load, rating, utilization, from one query of the model.
+    fn assess(&mut self, m: &Measurement<T>) -> Result<Estimate<T>, Fault> {
+        let terms = self.model.cycle_terms(CycleQuery {
+            force_angle_rad: m.boom.angle_rad,
+            now: m.boom_now,
+        });
+        let load_terms = terms
+            .load
+            .map_err(|e| Fault::Estimate(EstimateError::Model(e)))?;
+        let (at_rest, force_n) = load_equation(
+            &load_terms,
+            m.accel_rad_s2(),
+            m.piston_force_n,
+            &self.config.calibration,
+            m.friction,
+            m.static_friction_share,
+        )
+        .map_err(Fault::Estimate)?;
+        // The static hook mass: the rope-hypothesis bank when the swing
+        // geometry is known, else the load hanging straight and still.
+        let static_load = match self.bank.as_mut() {
+            Some(bank) => Some(
+                bank.update(&BankTerms {
+                    at_rest,
+                    force_n,
+                    angle_rad: m.boom.angle_rad,
+                })
+                .ok_or(Fault::Estimate(EstimateError::NotObservable))?,
+            ),
+            None => None,
+        };
+        let load_kg = match static_load {
+            Some(s) => Some(s.load_kg),
+            None => at_rest.solve(force_n),
+        }
+        .ok_or(Fault::Estimate(EstimateError::NotObservable))?
+            * self.config.load_reading_factor;
+        let capacity_terms = terms
+            .capacity
+            .map_err(|e| Fault::Capacity(CapacityError::Model(e)))?;
+        let rating = self
+            .config
+            .capacity
+            .rating_from(&capacity_terms)
+            .map_err(Fault::Capacity)?;
+        let ceiling = T::lit(UTILIZATION_CEILING);
+        let utilization = if rating.rated_load_kg > T::lit(0.0) {
+            (load_kg / rating.rated_load_kg).min(ceiling)
+        } else {
+            ceiling
+        };
+        Ok(Estimate {
+            load_kg,
+            rated_load_kg: rating.rated_load_kg,
+            tipping_load_kg: rating.tipping_load_kg,
+            utilization,
+            radius_m: rating.radius_m,
+            static_load,
+        })
+    }
+}
+

@@ -1,0 +1,212 @@
+//! Stages 1–2 of the cycle: counts to checked readings, the piston force, the
+//! filters, the rate, acceleration and direction, the swing correction, and the
+//! restart of all of them after a bad cycle.
+
+use crane_model::loads::load_model::{BoomState, HookLoadModel};
+use crane_model::Real;
+
+use super::{Limiter, Readings};
+use crate::checks::{FaultKind, SensorFault};
+use crate::io::{Channel, Measurement, SensorInputs};
+use crate::load_estimate::Direction;
+use crate::piston_force::piston_force_n;
+use crate::units::{BoomAngle, PressureBar};
+
+
+/// Angle and rate `horizon_s` ahead of a filtered (angle, rate,
+/// acceleration): constant acceleration, except that a decelerating boom is
+/// taken to stop where it would come to rest rather than to turn round (the
+/// end of a move: extrapolating the rate alone ran a boom that was stopping
+/// at 40° on to 37°, and its rating down by 7 %).
+fn extrapolate<T: Real>(angle: T, rate: T, accel: T, horizon_s: T) -> (T, T) {
+    let zero = T::lit(0.0);
+    let half = T::lit(0.5);
+    let rate_end = rate + accel * horizon_s;
+    if rate * accel < zero && rate * rate_end <= zero {
+        // Stops within the horizon, at rate²/(2·|accel|) from here.
+        (angle - rate * rate * half / accel, zero)
+    } else {
+        (
+            angle + (rate + half * accel * horizon_s) * horizon_s,
+            rate_end,
+        )
+    }
+}
+
+impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
+    pub(super) fn read_counts<S: SensorInputs>(&self, inputs: &mut S) -> Result<Readings<T>, SensorFault> {
+        let conv = &self.config.conversion;
+        let fault = |channel: Channel| move |kind: FaultKind| SensorFault { channel, kind };
+        let read = |inputs: &mut S, channel: Channel| {
+            inputs.read_counts(channel).map_err(|e| SensorFault {
+                channel,
+                kind: FaultKind::Input(e),
+            })
+        };
+        let c1 = read(inputs, Channel::PistonSidePressure)?;
+        let p1 = conv
+            .pressure(&conv.p1, c1)
+            .map_err(fault(Channel::PistonSidePressure))?;
+        let c2 = read(inputs, Channel::RodSidePressure)?;
+        let p2 = conv
+            .pressure(&conv.p2, c2)
+            .map_err(fault(Channel::RodSidePressure))?;
+        let ca = read(inputs, Channel::BoomAngle)?;
+        let a = conv.boom_angle(ca).map_err(fault(Channel::BoomAngle))?;
+        Ok((p1, p2, a))
+    }
+
+    /// After a bad cycle the filters restart settled on the next good sample,
+    /// so no faulty value ever reaches them.
+    pub(super) fn restart_signal_chain(&mut self) {
+        self.since_restart_s = Some(T::lit(0.0));
+        self.negative_load.reset();
+        self.monitor.break_rate_history();
+        if let Some(l) = self.force_lag.as_mut() {
+            l.reset();
+        }
+        self.force_filter.reset();
+        self.angle_filter.reset();
+        self.previous_angle_deg = None;
+        self.previous_rate_deg_s = None;
+        self.moving_for_s = T::lit(0.0);
+        // The load keeps swinging through a fault (a pressure out of range
+        // when a short rope swings inward at a steep boom): the swing
+        // observers run on over the gap, only the averages start afresh.
+        if let Some(b) = self.bank.as_mut() {
+            b.restart_averages();
+        }
+    }
+
+    /// Stage 2: force, filters, rate and direction.
+    pub(super) fn measure(
+        &mut self,
+        p1: PressureBar<T>,
+        p2: PressureBar<T>,
+        angle: BoomAngle<T>,
+        dt_s: T,
+    ) -> Measurement<T> {
+        let cal = &self.config.calibration;
+        let force = piston_force_n(p1, p2, cal.p1_offset_bar, cal.p2_offset_bar);
+        // The force through the angle sensor's lag too: force, angle, rate
+        // and acceleration then share one delay (see "Time alignment").
+        let force = match self.force_lag.as_mut() {
+            Some(l) => l.update(force, dt_s),
+            None => force,
+        };
+        let force_f = self.force_filter.update(force, dt_s);
+        let angle_f = self
+            .angle_filter
+            .update(angle.degrees() - cal.angle_offset_deg, dt_s);
+        // Rate and acceleration as differences of the filtered angle: the
+        // filter already removed the noise, and no further filter may delay
+        // them behind the force (their inertia term is in the force now).
+        let rate_f = match self.previous_angle_deg {
+            Some(prev) if dt_s > T::lit(0.0) => (angle_f - prev) / dt_s,
+            _ => self.previous_rate_deg_s.unwrap_or(T::lit(0.0)),
+        };
+        self.previous_angle_deg = Some(angle_f);
+        let accel_f = match self.previous_rate_deg_s {
+            Some(prev) if dt_s > T::lit(0.0) => (rate_f - prev) / dt_s,
+            _ => T::lit(0.0),
+        };
+        self.previous_rate_deg_s = Some(rate_f);
+        let previous_direction = self.direction.current();
+        let direction = self.direction.update(rate_f);
+        self.moving_for_s = if direction == Direction::Still {
+            T::lit(0.0)
+        } else if direction == previous_direction {
+            self.moving_for_s + dt_s
+        } else {
+            T::lit(0.0)
+        };
+        // The seals release at standstill (see crate::load_estimate).
+        self.static_friction_share = if direction == Direction::Still {
+            let x = dt_s / self.config.seal_release_s;
+            // e^(−x) ≈ 1/(1 + x + x²/2 + x³/6): no libm exp in the cycle.
+            self.static_friction_share
+                / (T::lit(1.0) + x * (T::lit(1.0) + x * (T::lit(0.5) + x / T::lit(6.0))))
+        } else {
+            T::lit(1.0)
+        };
+        // Time alignment (see the type's doc): the filtered force and the
+        // filtered angle both stand for t − d − lag.
+        let at_force = angle_f;
+        let (now, rate_now) = extrapolate(
+            angle_f,
+            rate_f,
+            accel_f,
+            self.config.angle_sensor_lag_s + self.force_filter.delay_s(dt_s),
+        );
+        let to_rad = T::pi() / T::lit(180.0);
+        let boom = BoomState {
+            angle_rad: at_force * to_rad,
+            rate_rad_s: rate_f * to_rad,
+        };
+        let settling = self.since_restart_s.is_some();
+        let tan_swing = match self.bank.as_mut() {
+            Some(b) => {
+                if settling {
+                    // The filters restarted at this reading: the swing is
+                    // carried over relative to the tip (no jump of the
+                    // filtered angle kicks it), the filters' start-up
+                    // acceleration is not the boom's, and no average
+                    // starts from a reading that is none yet.
+                    if self.since_restart_s == Some(T::lit(0.0)) {
+                        b.rebase(boom.angle_rad);
+                    }
+                    b.restart_averages();
+                }
+                let accel = if settling { T::lit(0.0) } else { accel_f * to_rad };
+                b.advance(
+                    boom.angle_rad,
+                    boom.rate_rad_s,
+                    accel,
+                    dt_s + core::mem::replace(&mut self.bank_idle_s, T::lit(0.0)),
+                )
+            }
+            None => T::lit(0.0),
+        };
+        Measurement {
+            piston_force_n: force_f,
+            boom_angle_deg: now,
+            rate_deg_s: rate_f,
+            accel_deg_s2: accel_f,
+            moving_for_s: self.moving_for_s,
+            direction,
+            friction: self.direction.friction(),
+            static_friction_share: self.static_friction_share,
+            boom,
+            boom_now: BoomState {
+                angle_rad: now * to_rad,
+                rate_rad_s: rate_now * to_rad,
+            },
+            tan_swing,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::extrapolate;
+
+    #[test]
+    fn extrapolation_follows_the_acceleration_and_stops_a_stopping_boom() {
+        // Steady lowering: a straight line.
+        assert_eq!(extrapolate(50.0_f64, -5.0, 0.0, 0.5), (47.5, -5.0));
+        // Speeding up: the parabola.
+        let (a, r) = extrapolate(50.0_f64, -1.0, -2.0, 0.5);
+        assert!((a - (50.0 - 0.5 - 0.25)).abs() < 1e-12 && (r + 2.0).abs() < 1e-12);
+        // Slowing down, still moving at the horizon: the parabola.
+        let (a, r) = extrapolate(50.0_f64, -5.0, 4.0, 0.5);
+        assert!((a - (50.0 - 2.5 + 0.5)).abs() < 1e-12 && (r + 3.0).abs() < 1e-12);
+        // Slowing down, stopped before the horizon: where it comes to rest
+        // (−5 °/s at 8 °/s² stops in 0.625 s, 1.5625° further), not beyond.
+        let (a, r) = extrapolate(50.0_f64, -5.0, 8.0, 1.0);
+        assert!((a - (50.0 - 1.5625)).abs() < 1e-12 && r == 0.0);
+        // The same raising.
+        let (a, r) = extrapolate(50.0_f64, 5.0, -8.0, 1.0);
+        assert!((a - (50.0 + 1.5625)).abs() < 1e-12 && r == 0.0);
+    }
+}
+

@@ -1,0 +1,673 @@
+//! The calibration file (`CAL.json`): its schema, its one reader and its
+//! writer, `no_std` and without a heap, shared by `crane-sim` and the
+//! firmware (SPEC §4.9) so the two cannot disagree about a file.
+//!
+//! ## Schema, version 1
+//!
+//! One JSON object; **every key is required, no other key is allowed**, each
+//! value is a JSON number within the bounds below (finite; the bounds are
+//! physical: a value beyond one is a broken sensor or a bad calibration run,
+//! not something to correct for):
+//!
+//! | key | unit | bounds | why |
+//! |---|---|---|---|
+//! | `version` | — | 1 | the schema version this reader knows |
+//! | `friction_up_n` | N | 0 … 40 000 | cylinder seal friction luffing up: ≤ 5 % of the 831 kN the cylinder exerts at 200 bar |
+//! | `friction_down_n` | N | 0 … 40 000 | the same, luffing down |
+//! | `force_offset_n` | N | −25 000 … 25 000 | zero-load force offset: ≤ 3 % of 831 kN (both transducers' ±2 % zero tolerance, 16.6 kN, plus the model's error at W = 0) |
+//! | `p1_offset_bar` | bar | −4 … 4 | zero of the piston-side transducer: ±2 % of its 200 bar span (beyond it the range check already calls the sensor faulty) |
+//! | `p2_offset_bar` | bar | −4 … 4 | the same, rod side |
+//! | `angle_offset_deg` | ° | −5 … 5 | zero of the pendulum: the 5° margin of its −5°…95° range |
+//!
+//! A file is refused with an error that names the key and, for a value out
+//! of bounds, the bound and its reason: an empty object, an array, a value of
+//! the wrong type, a missing, unknown or repeated key, a value out of bounds,
+//! an unsupported version. A file without `version` that holds calibration
+//! keys is one written before the schema (by an older `crane-sim calibrate`,
+//! with informational keys such as `samples_up`): its error says to run
+//! `crane-sim calibrate` again or to add `"version": 1` and remove the other
+//! keys after checking the values.
+//!
+//! JSON accepted: RFC 8259 objects, numbers, strings, `true`/`false`/`null`,
+//! arrays and objects nested at most [`MAX_DEPTH`] deep (only to name a
+//! wrong type), a UTF-8 byte-order mark. The writer
+//! ([`write_calibration_json`]) writes every key, one per line, with the
+//! shortest decimal that reads back to the same `f64`.
+
+use core::fmt::{self, Write};
+
+use crane_model::Real;
+
+use crate::load_estimate::Calibration;
+
+/// The schema version this reader knows and the writer writes.
+pub const CALIBRATION_VERSION: u32 = 1;
+
+/// Deepest nesting of arrays and objects skipped inside a value.
+pub const MAX_DEPTH: usize = 8;
+
+/// The key of the schema version.
+pub const VERSION_KEY: &str = "version";
+
+/// One value of the schema: its key, unit and physical bounds.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct KeySpec {
+    /// The JSON key.
+    pub key: &'static str,
+    /// Unit of the value.
+    pub unit: &'static str,
+    /// Smallest allowed value.
+    pub min: f64,
+    /// Largest allowed value.
+    pub max: f64,
+    /// Where the bounds come from (printed with a refusal).
+    pub why: &'static str,
+}
+
+/// The values of schema version 1, in the order of
+/// [`Calibration`]'s fields (see the module doc for the reasons).
+pub const CALIBRATION_KEYS: [KeySpec; 6] = [
+    KeySpec {
+        key: "friction_up_n",
+        unit: "N",
+        min: 0.0,
+        max: 40_000.0,
+        why: "5 % of the cylinder's 831 kN at 200 bar",
+    },
+    KeySpec {
+        key: "friction_down_n",
+        unit: "N",
+        min: 0.0,
+        max: 40_000.0,
+        why: "5 % of the cylinder's 831 kN at 200 bar",
+    },
+    KeySpec {
+        key: "force_offset_n",
+        unit: "N",
+        min: -25_000.0,
+        max: 25_000.0,
+        why: "3 % of the cylinder's 831 kN: transducer zero tolerance plus model error",
+    },
+    KeySpec {
+        key: "p1_offset_bar",
+        unit: "bar",
+        min: -4.0,
+        max: 4.0,
+        why: "2 % of the 200 bar transducer span",
+    },
+    KeySpec {
+        key: "p2_offset_bar",
+        unit: "bar",
+        min: -4.0,
+        max: 4.0,
+        why: "2 % of the 200 bar transducer span",
+    },
+    KeySpec {
+        key: "angle_offset_deg",
+        unit: "deg",
+        min: -5.0,
+        max: 5.0,
+        why: "the pendulum's 5 degree range margin",
+    },
+];
+
+/// Longest unknown key kept for the error message (longer ones are cut).
+pub const KEY_ECHO_LEN: usize = 40;
+
+/// Why a calibration file was refused.
+#[derive(Debug, Clone, PartialEq)]
+pub enum CalibrationFileError {
+    /// Not JSON (or not the JSON this reader takes) at this byte offset.
+    Syntax {
+        /// 0-based byte offset.
+        at: usize,
+        /// What was expected.
+        expected: &'static str,
+    },
+    /// The file holds no object: an array, a number, a string…
+    NotAnObject,
+    /// A required key is absent.
+    MissingKey(&'static str),
+    /// A key the schema does not have (cut to [`KEY_ECHO_LEN`] bytes).
+    UnknownKey(heapless::String<KEY_ECHO_LEN>),
+    /// A key is given twice.
+    DuplicateKey(&'static str),
+    /// The value of this key is not a JSON number.
+    NotANumber(&'static str),
+    /// The value is outside its bounds.
+    OutOfBounds {
+        /// The key and its bounds.
+        spec: KeySpec,
+        /// The value found.
+        value: f64,
+    },
+    /// `version` is not one this reader knows.
+    UnsupportedVersion(f64),
+    /// No `version`, but calibration keys: a file from before the schema.
+    PreSchemaFile,
+}
+
+impl fmt::Display for CalibrationFileError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        use CalibrationFileError as E;
+        match self {
+            E::Syntax { at, expected } => write!(f, "not valid JSON at byte {at}: {expected}"),
+            E::NotAnObject => f.write_str("expected one JSON object `{...}` of calibration keys"),
+            E::MissingKey(k) => write!(f, "key `{k}` is missing (every key is required)"),
+            E::UnknownKey(k) => write!(f, "key `{k}` is not in the calibration schema"),
+            E::DuplicateKey(k) => write!(f, "key `{k}` is given twice"),
+            E::NotANumber(k) => write!(f, "key `{k}` must be a number"),
+            E::OutOfBounds { spec, value } => write!(
+                f,
+                "key `{}` = {value} is outside {} ... {} {} ({})",
+                spec.key, spec.min, spec.max, spec.unit, spec.why
+            ),
+            E::UnsupportedVersion(v) => write!(
+                f,
+                "key `{VERSION_KEY}` = {v}: this reader knows version {CALIBRATION_VERSION} only"
+            ),
+            E::PreSchemaFile => write!(
+                f,
+                "key `{VERSION_KEY}` is missing: the file predates calibration schema \
+                 {CALIBRATION_VERSION}; run `crane-sim calibrate` again, or check the values, \
+                 add \"{VERSION_KEY}\": {CALIBRATION_VERSION} and remove the keys the schema \
+                 does not have"
+            ),
+        }
+    }
+}
+
+/// Reads a calibration file (the bytes of `CAL.json`) against the schema.
+pub fn parse_calibration<T: Real>(text: &[u8]) -> Result<Calibration<T>, CalibrationFileError> {
+    let values = read_object(text)?;
+    let [fu, fd, fo, p1, p2, a] = values;
+    Ok(Calibration {
+        friction_up_n: T::lit(fu),
+        friction_down_n: T::lit(fd),
+        force_offset_n: T::lit(fo),
+        p1_offset_bar: T::lit(p1),
+        p2_offset_bar: T::lit(p2),
+        angle_offset_deg: T::lit(a),
+    })
+}
+
+/// Checks a calibration against the schema's bounds (what the reader
+/// checks): `crane-sim calibrate` refuses to write a file the reader would
+/// refuse.
+pub fn check_calibration(cal: &Calibration<f64>) -> Result<(), CalibrationFileError> {
+    for (spec, value) in CALIBRATION_KEYS.iter().zip(calibration_values(cal)) {
+        check_bounds(spec, value)?;
+    }
+    Ok(())
+}
+
+/// Writes `cal` as a schema-version-1 file (one key per line, trailing
+/// newline). Call [`check_calibration`] first: this writes any value.
+pub fn write_calibration_json<W: Write>(w: &mut W, cal: &Calibration<f64>) -> fmt::Result {
+    write!(w, "{{\n  \"{VERSION_KEY}\": {CALIBRATION_VERSION}")?;
+    for (spec, value) in CALIBRATION_KEYS.iter().zip(calibration_values(cal)) {
+        // `{:?}` prints the shortest decimal that reads back to the same f64,
+        // and always with a '.' or an exponent.
+        write!(w, ",\n  \"{}\": {:?}", spec.key, value)?;
+    }
+    w.write_str("\n}\n")
+}
+
+fn calibration_values(cal: &Calibration<f64>) -> [f64; 6] {
+    [
+        cal.friction_up_n,
+        cal.friction_down_n,
+        cal.force_offset_n,
+        cal.p1_offset_bar,
+        cal.p2_offset_bar,
+        cal.angle_offset_deg,
+    ]
+}
+
+fn check_bounds(spec: &KeySpec, value: f64) -> Result<(), CalibrationFileError> {
+    if value.is_finite() && value >= spec.min && value <= spec.max {
+        Ok(())
+    } else {
+        Err(CalibrationFileError::OutOfBounds { spec: *spec, value })
+    }
+}
+
+/// What a member's value turned out to be.
+enum Value {
+    Number(f64),
+    Other,
+}
+
+/// The first error of each kind found while scanning the whole object; the
+/// most telling one is reported (version before unknown keys before values
+/// before missing keys), so an old file gets the upgrade message.
+#[derive(Default)]
+struct Findings {
+    version: Option<f64>,
+    version_error: Option<CalibrationFileError>,
+    unknown: Option<CalibrationFileError>,
+    value_error: Option<CalibrationFileError>,
+    values: [Option<f64>; 6],
+}
+
+fn read_object(text: &[u8]) -> Result<[f64; 6], CalibrationFileError> {
+    let mut c = Cursor {
+        s: text.strip_prefix("\u{feff}".as_bytes()).unwrap_or(text),
+        i: 0,
+    };
+    match c.peek() {
+        Some(b'{') => c.i += 1,
+        None => return Err(c.syntax("a JSON object, found an empty file")),
+        Some(_) => {
+            // Tell "not an object" from "not JSON at all".
+            c.skip_value(0)?;
+            return Err(CalibrationFileError::NotAnObject);
+        }
+    }
+    let mut found = Findings::default();
+    if c.peek() == Some(b'}') {
+        c.i += 1;
+    } else {
+        loop {
+            let key = c.string()?;
+            c.expect(b':', "':' after the key")?;
+            let value = c.value()?;
+            found.member(key, value)?;
+            match c.peek() {
+                Some(b',') => c.i += 1,
+                Some(b'}') => {
+                    c.i += 1;
+                    break;
+                }
+                _ => return Err(c.syntax("',' or '}' after a member")),
+            }
+        }
+    }
+    if c.peek().is_some() {
+        return Err(c.syntax("the end of the file after the object"));
+    }
+    found.finish()
+}
+
+impl Findings {
+    fn member(&mut self, key: &[u8], value: Value) -> Result<(), CalibrationFileError> {
+        use CalibrationFileError as E;
+        if key == VERSION_KEY.as_bytes() {
+            if self.version.is_some() {
+                return Err(E::DuplicateKey(VERSION_KEY));
+            }
+            let v = match value {
+                Value::Number(v) => v,
+                Value::Other => {
+                    self.version_error.get_or_insert(E::NotANumber(VERSION_KEY));
+                    f64::NAN
+                }
+            };
+            self.version = Some(v);
+            if v == f64::from(CALIBRATION_VERSION) {
+                return Ok(());
+            }
+            if !v.is_nan() {
+                self.version_error.get_or_insert(E::UnsupportedVersion(v));
+            }
+            return Ok(());
+        }
+        let Some((slot, spec)) = CALIBRATION_KEYS
+            .iter()
+            .position(|s| s.key.as_bytes() == key)
+            .and_then(|k| Some((self.values.get_mut(k)?, CALIBRATION_KEYS.get(k)?)))
+        else {
+            if self.unknown.is_none() {
+                let mut echo = heapless::String::new();
+                for ch in core::str::from_utf8(key).unwrap_or("(not UTF-8)").chars() {
+                    if echo.push(ch).is_err() {
+                        break;
+                    }
+                }
+                self.unknown = Some(E::UnknownKey(echo));
+            }
+            return Ok(());
+        };
+        if slot.is_some() {
+            return Err(E::DuplicateKey(spec.key));
+        }
+        match value {
+            Value::Number(v) => {
+                *slot = Some(v);
+                if let Err(e) = check_bounds(spec, v) {
+                    self.value_error.get_or_insert(e);
+                }
+            }
+            Value::Other => {
+                *slot = Some(f64::NAN);
+                self.value_error.get_or_insert(E::NotANumber(spec.key));
+            }
+        }
+        Ok(())
+    }
+
+    fn finish(self) -> Result<[f64; 6], CalibrationFileError> {
+        use CalibrationFileError as E;
+        if self.version.is_none() {
+            return Err(if self.values.iter().any(Option::is_some) {
+                E::PreSchemaFile
+            } else {
+                E::MissingKey(VERSION_KEY)
+            });
+        }
+        if let Some(e) = self.version_error.or(self.unknown).or(self.value_error) {
+            return Err(e);
+        }
+        let mut out = [0.0; 6];
+        for ((o, v), spec) in out.iter_mut().zip(self.values).zip(CALIBRATION_KEYS.iter()) {
+            *o = v.ok_or(E::MissingKey(spec.key))?;
+        }
+        Ok(out)
+    }
+}
+
+struct Cursor<'a> {
+    s: &'a [u8],
+    i: usize,
+}
+
+impl<'a> Cursor<'a> {
+    fn syntax(&self, expected: &'static str) -> CalibrationFileError {
+        CalibrationFileError::Syntax {
+            at: self.i,
+            expected,
+        }
+    }
+
+    fn peek(&mut self) -> Option<u8> {
+        while self.s.get(self.i).is_some_and(|b| b" \t\r\n".contains(b)) {
+            self.i += 1;
+        }
+        self.s.get(self.i).copied()
+    }
+
+    fn expect(&mut self, c: u8, expected: &'static str) -> Result<(), CalibrationFileError> {
+        if self.peek() == Some(c) {
+            self.i += 1;
+            Ok(())
+        } else {
+            Err(self.syntax(expected))
+        }
+    }
+
+    /// A string's raw bytes between the quotes (escapes kept as written: a
+    /// key with escapes is then simply not a schema key).
+    fn string(&mut self) -> Result<&'a [u8], CalibrationFileError> {
+        self.expect(b'"', "a string in double quotes")?;
+        let start = self.i;
+        loop {
+            match self.s.get(self.i) {
+                None => return Err(self.syntax("the closing '\"' of a string")),
+                Some(b'\\') => self.i += 2,
+                Some(b'"') => {
+                    let raw = self.s.get(start..self.i).unwrap_or_default();
+                    self.i += 1;
+                    return Ok(raw);
+                }
+                Some(b) if *b < 0x20 => return Err(self.syntax("no control character in a string")),
+                Some(_) => self.i += 1,
+            }
+        }
+    }
+
+    /// A JSON number (RFC 8259 grammar), or another value skipped.
+    fn value(&mut self) -> Result<Value, CalibrationFileError> {
+        match self.peek() {
+            Some(b'-' | b'0'..=b'9') => self.number().map(Value::Number),
+            _ => self.skip_value(0).map(|()| Value::Other),
+        }
+    }
+
+    fn number(&mut self) -> Result<f64, CalibrationFileError> {
+        let start = self.i;
+        let digits = |c: &mut Self| {
+            let from = c.i;
+            while c.s.get(c.i).is_some_and(u8::is_ascii_digit) {
+                c.i += 1;
+            }
+            c.i > from
+        };
+        if self.s.get(self.i) == Some(&b'-') {
+            self.i += 1;
+        }
+        let leading_zero = self.s.get(self.i) == Some(&b'0');
+        if !digits(self) {
+            return Err(self.syntax("a digit"));
+        }
+        if leading_zero && self.i - start > 1 + usize::from(self.s.get(start) == Some(&b'-')) {
+            return Err(self.syntax("no leading zero in a number"));
+        }
+        if self.s.get(self.i) == Some(&b'.') {
+            self.i += 1;
+            if !digits(self) {
+                return Err(self.syntax("a digit after '.'"));
+            }
+        }
+        if matches!(self.s.get(self.i), Some(b'e' | b'E')) {
+            self.i += 1;
+            if matches!(self.s.get(self.i), Some(b'+' | b'-')) {
+                self.i += 1;
+            }
+            if !digits(self) {
+                return Err(self.syntax("a digit in the exponent"));
+            }
+        }
+        self.s
+            .get(start..self.i)
+            .and_then(|b| core::str::from_utf8(b).ok())
+            .and_then(|t| t.parse::<f64>().ok())
+            .ok_or(CalibrationFileError::Syntax {
+                at: start,
+                expected: "a number",
+            })
+    }
+
+    /// Skips any JSON value, nested at most [`MAX_DEPTH`] deep.
+    fn skip_value(&mut self, depth: usize) -> Result<(), CalibrationFileError> {
+        if depth > MAX_DEPTH {
+            return Err(self.syntax("less nesting"));
+        }
+        match self.peek() {
+            Some(b'"') => self.string().map(|_| ()),
+            Some(b'-' | b'0'..=b'9') => self.number().map(|_| ()),
+            Some(open @ (b'{' | b'[')) => {
+                let close = if open == b'{' { b'}' } else { b']' };
+                self.i += 1;
+                if self.peek() == Some(close) {
+                    self.i += 1;
+                    return Ok(());
+                }
+                loop {
+                    if open == b'{' {
+                        self.string()?;
+                        self.expect(b':', "':' after the key")?;
+                    }
+                    self.skip_value(depth + 1)?;
+                    match self.peek() {
+                        Some(b',') => self.i += 1,
+                        Some(c) if c == close => {
+                            self.i += 1;
+                            return Ok(());
+                        }
+                        _ => return Err(self.syntax("',' or a closing bracket")),
+                    }
+                }
+            }
+            _ => {
+                for word in ["true", "false", "null"] {
+                    if self.s.get(self.i..).is_some_and(|r| r.starts_with(word.as_bytes())) {
+                        self.i += word.len();
+                        return Ok(());
+                    }
+                }
+                Err(self.syntax("a JSON value"))
+            }
+        }
+    }
+}
+
+/// Test data: a valid file and a table of hostile ones, shared by the tests
+/// of this reader, of `crane-sim replay` and of the firmware under QEMU, so
+/// all three are held to the same verdicts.
+#[cfg(any(test, feature = "std"))]
+#[doc(hidden)]
+pub mod hostile {
+    use super::CALIBRATION_KEYS;
+
+    /// A valid file of schema version 1 (the base the hostile cases alter).
+    pub const GOOD: &str = r#"{"version": 1, "friction_up_n": 10011.5, "friction_down_n": 9000,
+        "force_offset_n": -1932.4, "p1_offset_bar": 0.5, "p2_offset_bar": -0.25,
+        "angle_offset_deg": 0.0}"#;
+
+    /// Replaces the value of `key` in GOOD (or removes the member with `None`).
+    pub fn with(key: &str, value: Option<&str>) -> String {
+        let start = GOOD.find(&format!("\"{key}\"")).unwrap();
+        let end = start + GOOD[start..].find([',', '}']).unwrap();
+        match value {
+            Some(v) => format!("{}\"{key}\": {v}{}", &GOOD[..start], &GOOD[end..]),
+            None => {
+                // Drop the member and the comma after it (or before it, if last).
+                let rest = &GOOD[end..];
+                if let Some(r) = rest.strip_prefix(',') {
+                    format!("{}{}", &GOOD[..start], r)
+                } else {
+                    let head = GOOD[..start].trim_end();
+                    format!("{}{}", head.strip_suffix(',').unwrap(), rest)
+                }
+            }
+        }
+    }
+
+    /// The hostile table: (name, file text, what the refusal must say); every
+    /// entry must be refused, naming the key at fault.
+    pub fn cases() -> Vec<(String, String, &'static str)> {
+        let mut cases: Vec<(String, String, &'static str)> = vec![
+            ("empty object".into(), "{}".into(), "`version` is missing"),
+            ("array".into(), "[1,2,3]".into(), "one JSON object"),
+            ("empty file".into(), "".into(), "empty file"),
+            ("not JSON".into(), "friction_up_n = 3".into(), "not valid JSON"),
+            ("trailing garbage".into(), format!("{GOOD} x"), "not valid JSON"),
+            (
+                "unknown key".into(),
+                GOOD.replace("\"angle_offset_deg\"", "\"angle_ofset_deg\""),
+                "`angle_ofset_deg` is not in the calibration schema",
+            ),
+            (
+                "duplicate key".into(),
+                GOOD.replace("\"p2_offset_bar\"", "\"p1_offset_bar\""),
+                "`p1_offset_bar` is given twice",
+            ),
+            (
+                "version 2".into(),
+                with("version", Some("2")),
+                "`version` = 2: this reader knows version 1",
+            ),
+            (
+                "version as a string".into(),
+                with("version", Some("\"1\"")),
+                "`version` must be a number",
+            ),
+            (
+                "pre-schema file (no version)".into(),
+                with("version", None),
+                "predates calibration schema 1",
+            ),
+        ];
+        for spec in CALIBRATION_KEYS {
+            let k = spec.key;
+            cases.push((format!("{k} missing"), with(k, None), "is missing"));
+            for (what, v) in [
+                ("a string", "\"10\""),
+                ("null", "null"),
+                ("true", "true"),
+                ("an array", "[1]"),
+                ("an object", "{\"a\": 1}"),
+            ] {
+                cases.push((format!("{k} is {what}"), with(k, Some(v)), "must be a number"));
+            }
+            let over = format!("{}", spec.max + 1.0);
+            let under = format!("{}", spec.min - 1.0);
+            cases.push((format!("{k} above its bound"), with(k, Some(&over)), "is outside"));
+            cases.push((format!("{k} below its bound"), with(k, Some(&under)), "is outside"));
+            cases.push((format!("{k} = 1e999"), with(k, Some("1e999")), "is outside"));
+        }
+        cases.push((
+            "p1_offset_bar = 50 (the issue's case)".into(),
+            with("p1_offset_bar", Some("50")),
+            "key `p1_offset_bar` = 50 is outside -4 ... 4 bar (2 % of the 200 bar transducer span)",
+        ));
+        cases
+    }
+
+}
+
+#[cfg(test)]
+mod tests {
+    use super::hostile::{cases as hostile_cases, with, GOOD};
+    use super::*;
+
+    #[test]
+    fn a_good_file_reads_and_the_writer_round_trips() {
+        let c = parse_calibration::<f64>(GOOD.as_bytes()).unwrap();
+        assert_eq!(c.friction_up_n, 10011.5);
+        assert_eq!(c.force_offset_n, -1932.4);
+        assert_eq!(c.p2_offset_bar, -0.25);
+        let mut text = String::new();
+        write_calibration_json(&mut text, &c).unwrap();
+        assert_eq!(parse_calibration::<f64>(text.as_bytes()).unwrap(), c);
+        assert!(text.starts_with("{\n  \"version\": 1,\n"), "{text}");
+        // BOM and f32.
+        let bom = format!("\u{feff}{GOOD}");
+        let c32 = parse_calibration::<f32>(bom.as_bytes()).unwrap();
+        assert_eq!(c32.friction_up_n, 10011.5_f32);
+    }
+
+    #[test]
+    fn every_hostile_file_is_refused_naming_the_key() {
+        for (name, text, expect) in hostile_cases() {
+            let e = parse_calibration::<f32>(text.as_bytes())
+                .map(|_| ())
+                .expect_err(&name);
+            let msg = e.to_string();
+            assert!(msg.contains(expect), "{name}: `{msg}` lacks `{expect}`\n{text}");
+            // The key is named wherever one is at fault.
+            for spec in CALIBRATION_KEYS {
+                if name.starts_with(spec.key) {
+                    assert!(msg.contains(&format!("`{}`", spec.key)), "{name}: {msg}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_shipped_example_is_schema_1() {
+        let text = include_str!("../../../../examples/logs/cal.json");
+        let c = parse_calibration::<f64>(text.as_bytes()).unwrap();
+        assert!(check_calibration(&c).is_ok());
+    }
+
+    #[test]
+    fn bounds_are_inclusive_and_non_numbers_are_syntax_errors() {
+        for spec in CALIBRATION_KEYS {
+            for v in [spec.min, spec.max] {
+                let t = with(spec.key, Some(&format!("{v}")));
+                assert!(parse_calibration::<f64>(t.as_bytes()).is_ok(), "{t}");
+            }
+        }
+        for bad in ["NaN", "Infinity", "01", "1.", ".5", "+1", "- 1"] {
+            let t = with("p1_offset_bar", Some(bad));
+            assert!(
+                matches!(
+                    parse_calibration::<f64>(t.as_bytes()),
+                    Err(CalibrationFileError::Syntax { .. })
+                ),
+                "{bad}"
+            );
+        }
+    }
+}

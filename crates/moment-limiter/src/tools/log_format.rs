@@ -1,0 +1,587 @@
+//! The sensor log format of SPEC §5, parsed one line at a time (no heap).
+//!
+//! ```text
+//! # comment lines start with '#'
+//! t_s,p1_bar,p2_bar,boom_angle_deg,true_load_kg
+//! 0.00,61.2,5.1,40.02,3300
+//! ```
+//! - UTF-8; a byte-order mark before the header and `\r\n` endings are accepted.
+//! - `#` lines and blank lines are skipped (but counted in line numbers).
+//! - The first other line is the header. It must name `t_s`, `p1_bar`,
+//!   `p2_bar` and `boom_angle_deg`, in any order; `true_load_kg` is optional;
+//!   other columns are allowed and ignored. Names are case-sensitive.
+//! - Each data row has exactly as many fields as the header. Fields are
+//!   decimal numbers (surrounding spaces allowed). `t_s` must be finite and
+//!   never decrease. A sensor value written as `NaN` or `inf` is read as such
+//!   and becomes a sensor FAULT in the limiter, like any out-of-range value;
+//!   text that is not a number is a format error. `true_load_kg` may be empty.
+//!
+//! Errors name the 1-based line (comments and header counted) and the field.
+//!
+//! ## Time
+//!
+//! `t_s` is read **exactly**, from its decimal digits (an optional sign, an
+//! optional exponent), to whole microseconds: digits beyond the microsecond
+//! are rounded, half away from zero; the time may be anywhere within
+//! ±9.2·10¹² s. It is never converted through a float, so a log whose times
+//! are shifted by any whole number of microseconds (40 h, 463 days, across
+//! the limiter clock's 2³² µs wrap) replays to the same events at the same
+//! samples. [`Record::t_us`] keeps the exact time (for printing);
+//! [`Frame::t`] is the limiter's wrapping tick ([`crate::clock`]), the
+//! exact differences of the log's times, except that a step of 2³¹ µs
+//! (35.8 min) or more is handed to the limiter as 2³¹ − 1 µs, a gap it
+//! faults on like any gap over 50 ms (the 32-bit clock could otherwise not
+//! tell a gap of k × 71.6 min from none).
+//!
+//! **Which time errors are the file's and which the limiter's.** A time that
+//! is not a number, not finite, out of range or **earlier than the previous
+//! row's** is a malformed file (SPEC §5): an error naming the line; the replay
+//! stops there. A time **equal to the previous row's** (a stalled clock,
+//! duplicate samples) or a **gap** between rows is data: it is what the
+//! controller would have lived through, so it goes to the limiter, which
+//! FAULTs and cuts exactly as on the board ([`crate::clock`]); the replay
+//! shows the FAULT at that sample and exits 2, never 0.
+//! The firmware reads the log line by line through semihosting and calls
+//! [`LogParser::feed_line`] on each; the host does the same.
+
+use core::fmt;
+
+use crane_model::Real;
+
+use crate::clock::{Ticks, BACKWARDS_FROM_US};
+use crate::io::Frame;
+
+/// Most columns a header may have.
+pub const MAX_COLUMNS: usize = 16;
+
+/// Name of the time column.
+pub const T_S: &str = "t_s";
+/// Name of the piston-side pressure column.
+pub const P1_BAR: &str = "p1_bar";
+/// Name of the rod-side pressure column.
+pub const P2_BAR: &str = "p2_bar";
+/// Name of the boom angle column.
+pub const BOOM_ANGLE_DEG: &str = "boom_angle_deg";
+/// Name of the optional true-load column.
+pub const TRUE_LOAD_KG: &str = "true_load_kg";
+
+/// What a header column holds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Column {
+    Time,
+    P1,
+    P2,
+    Angle,
+    TrueLoad,
+    Ignored,
+}
+
+impl Column {
+    fn from_name(name: &str) -> Self {
+        match name {
+            T_S => Column::Time,
+            P1_BAR => Column::P1,
+            P2_BAR => Column::P2,
+            BOOM_ANGLE_DEG => Column::Angle,
+            TRUE_LOAD_KG => Column::TrueLoad,
+            _ => Column::Ignored,
+        }
+    }
+    fn name(self) -> &'static str {
+        match self {
+            Column::Time => T_S,
+            Column::P1 => P1_BAR,
+            Column::P2 => P2_BAR,
+            Column::Angle => BOOM_ANGLE_DEG,
+            Column::TrueLoad => TRUE_LOAD_KG,
+            Column::Ignored => "(ignored column)",
+        }
+    }
+}
+
+/// What is wrong with the log.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LogErrorKind {
+    /// The file has no header (it is empty or holds only comments).
+    Empty,
+    /// The header names no such required column.
+    MissingColumn(&'static str),
+    /// The header names a column twice.
+    DuplicateColumn(&'static str),
+    /// The first line that is not a comment looks like data, not a header.
+    NoHeader,
+    /// The header has more than [`MAX_COLUMNS`] columns.
+    TooManyColumns,
+    /// The row ends before this field.
+    MissingField(&'static str),
+    /// The row has more fields than the header.
+    TooManyFields,
+    /// This field is empty.
+    EmptyField(&'static str),
+    /// This field is not a number.
+    NotANumber(&'static str),
+    /// The time is not finite.
+    TimeNotFinite,
+    /// The time is beyond ±9.2·10¹² s (it does not fit the exact clock).
+    TimeOutOfRange,
+    /// The time is earlier than the previous row's.
+    TimeBackwards,
+    /// The header is followed by no data row.
+    NoSamples,
+    /// The line is not valid UTF-8 (reported by the reader, which sees bytes).
+    NotUtf8,
+    /// The line could not be read at all (reported by the reader).
+    Unreadable,
+}
+
+/// A log error, with the 1-based line it is on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct LogError {
+    /// 1-based line number (comment and header lines counted).
+    pub line: u32,
+    /// What is wrong.
+    pub kind: LogErrorKind,
+}
+
+impl fmt::Display for LogError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "line {}: ", self.line)?;
+        match self.kind {
+            LogErrorKind::Empty => f.write_str("empty log: no header line"),
+            LogErrorKind::MissingColumn(c) => write!(f, "header has no column `{c}`"),
+            LogErrorKind::DuplicateColumn(c) => write!(f, "header names column `{c}` twice"),
+            LogErrorKind::NoHeader => write!(
+                f,
+                "header required (`{T_S},{P1_BAR},{P2_BAR},{BOOM_ANGLE_DEG}`), found data"
+            ),
+            LogErrorKind::TooManyColumns => write!(f, "header has more than {MAX_COLUMNS} columns"),
+            LogErrorKind::MissingField(c) => write!(f, "field `{c}` missing (row too short)"),
+            LogErrorKind::TooManyFields => f.write_str("more fields than the header has columns"),
+            LogErrorKind::EmptyField(c) => write!(f, "field `{c}` is empty"),
+            LogErrorKind::NotANumber(c) => write!(f, "field `{c}` is not a number"),
+            LogErrorKind::TimeNotFinite => write!(f, "field `{T_S}` is not a finite time"),
+            LogErrorKind::TimeOutOfRange => {
+                write!(f, "field `{T_S}` is out of range (beyond ±9.2e12 s)")
+            }
+            LogErrorKind::TimeBackwards => write!(f, "field `{T_S}` goes backwards in time"),
+            LogErrorKind::NoSamples => f.write_str("no data rows after the header"),
+            LogErrorKind::NotUtf8 => f.write_str("not valid UTF-8"),
+            LogErrorKind::Unreadable => f.write_str("could not be read"),
+        }
+    }
+}
+
+/// One data row.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Record<T> {
+    /// 1-based line number of the row.
+    pub line: u32,
+    /// The row's time exactly as written, in microseconds (see "Time").
+    pub t_us: i64,
+    /// The sensor values.
+    pub frame: Frame<T>,
+    /// The true hook load (kg), if the log has it.
+    pub true_load_kg: Option<T>,
+}
+
+/// A line-at-a-time parser of the log format.
+#[derive(Debug, Clone)]
+pub struct LogParser<T> {
+    line: u32,
+    columns: Option<heapless::Vec<Column, MAX_COLUMNS>>,
+    /// Exact time (µs) and tick of the previous row.
+    last: Option<(i64, Ticks)>,
+    samples: u32,
+    _values: core::marker::PhantomData<T>,
+}
+
+impl<T: Real> Default for LogParser<T> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<T: Real> LogParser<T> {
+    /// A parser before the first line.
+    pub fn new() -> Self {
+        Self {
+            line: 0,
+            columns: None,
+            last: None,
+            samples: 0,
+            _values: core::marker::PhantomData,
+        }
+    }
+
+    /// Number of lines fed so far (= the line number of the last one).
+    pub fn line(&self) -> u32 {
+        self.line
+    }
+
+    /// Number of data rows parsed so far.
+    pub fn samples(&self) -> u32 {
+        self.samples
+    }
+
+    /// An error on the line about to be fed (for a reader that could not
+    /// decode or read it): counts the line and returns the error.
+    pub fn reject_next_line(&mut self, kind: LogErrorKind) -> LogError {
+        self.line = self.line.saturating_add(1);
+        LogError {
+            line: self.line,
+            kind,
+        }
+    }
+
+    /// Parses the next line (without its line ending; a trailing `\r` is
+    /// removed). Returns the record for a data row, `None` for a comment,
+    /// blank or header line.
+    pub fn feed_line(&mut self, raw: &str) -> Result<Option<Record<T>>, LogError> {
+        self.line = self.line.saturating_add(1);
+        let line_no = self.line;
+        let err = |kind| LogError {
+            line: line_no,
+            kind,
+        };
+        let mut text = raw.strip_suffix('\r').unwrap_or(raw);
+        if self.columns.is_none() {
+            text = text.strip_prefix('\u{feff}').unwrap_or(text);
+        }
+        let trimmed = text.trim();
+        if trimmed.is_empty() || trimmed.starts_with('#') {
+            return Ok(None);
+        }
+        let Some(columns) = &self.columns else {
+            self.columns = Some(parse_header(trimmed).map_err(err)?);
+            return Ok(None);
+        };
+        let mut fields = trimmed.split(',');
+        let mut values: [Option<T>; 5] = [None; 5];
+        let mut time_us = None;
+        for &column in columns.iter() {
+            let field = fields
+                .next()
+                .ok_or(err(LogErrorKind::MissingField(column.name())))?
+                .trim();
+            let slot = match column {
+                Column::Time => values.get_mut(0),
+                Column::P1 => values.get_mut(1),
+                Column::P2 => values.get_mut(2),
+                Column::Angle => values.get_mut(3),
+                Column::TrueLoad if field.is_empty() => None,
+                Column::TrueLoad => values.get_mut(4),
+                Column::Ignored => None,
+            };
+            if let Some(slot) = slot {
+                if field.is_empty() {
+                    return Err(err(LogErrorKind::EmptyField(column.name())));
+                }
+                if column == Column::Time {
+                    time_us = Some(parse_time_us(field).map_err(err)?);
+                    continue;
+                }
+                let v: f64 = field
+                    .parse()
+                    .map_err(|_| err(LogErrorKind::NotANumber(column.name())))?;
+                *slot = Some(T::lit(v));
+            }
+        }
+        if fields.next().is_some() {
+            return Err(err(LogErrorKind::TooManyFields));
+        }
+        let missing = |name| err(LogErrorKind::MissingField(name));
+        let [_, p1, p2, angle, true_load] = values;
+        let t_us = time_us.ok_or(missing(T_S))?;
+        let frame = Frame {
+            t: Ticks(0),
+            p1_bar: p1.ok_or(missing(P1_BAR))?,
+            p2_bar: p2.ok_or(missing(P2_BAR))?,
+            boom_angle_deg: angle.ok_or(missing(BOOM_ANGLE_DEG))?,
+        };
+        let t = match self.last {
+            None => Ticks(t_us as u32), // the low 32 bits: wrapping
+            Some((last_us, last_tick)) => {
+                let step = t_us
+                    .checked_sub(last_us)
+                    .filter(|d| *d >= 0)
+                    .ok_or(err(LogErrorKind::TimeBackwards))?;
+                let clamped = u32::try_from(step)
+                    .unwrap_or(u32::MAX)
+                    .min(BACKWARDS_FROM_US - 1);
+                last_tick.wrapping_add_micros(clamped)
+            }
+        };
+        self.last = Some((t_us, t));
+        self.samples = self.samples.saturating_add(1);
+        Ok(Some(Record {
+            line: line_no,
+            t_us,
+            frame: Frame {
+                t,
+                ..frame
+            },
+            true_load_kg: true_load,
+        }))
+    }
+
+    /// Call at the end of the input: an empty log or a header without rows is
+    /// an error (on line 1, or on the line after the last).
+    pub fn finish(&self) -> Result<(), LogError> {
+        if self.columns.is_none() {
+            Err(LogError {
+                line: self.line.max(1),
+                kind: LogErrorKind::Empty,
+            })
+        } else if self.samples == 0 {
+            Err(LogError {
+                line: self.line.saturating_add(1),
+                kind: LogErrorKind::NoSamples,
+            })
+        } else {
+            Ok(())
+        }
+    }
+}
+
+/// Reads a decimal time in seconds (`[+-]digits[.digits][e[+-]digits]`)
+/// exactly, as whole microseconds, rounding the digits beyond the
+/// microsecond half away from zero (see "Time" in the module doc).
+pub fn parse_time_us(text: &str) -> Result<i64, LogErrorKind> {
+    if text.parse::<f64>().is_ok_and(|v| !v.is_finite()) {
+        return Err(LogErrorKind::TimeNotFinite);
+    }
+    let not_a_number = LogErrorKind::NotANumber(T_S);
+    let (negative, body) = match text.as_bytes().first() {
+        Some(b'-') => (true, text.get(1..).unwrap_or("")),
+        Some(b'+') => (false, text.get(1..).unwrap_or("")),
+        _ => (false, text),
+    };
+    let (mantissa, exponent) = match body.find(['e', 'E']) {
+        Some(i) => (
+            body.get(..i).unwrap_or(""),
+            body.get(i + 1..)
+                .and_then(|e| e.parse::<i32>().ok())
+                .ok_or(not_a_number)?,
+        ),
+        None => (body, 0),
+    };
+    let (int, frac) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    let all_digits = |s: &str| s.bytes().all(|b| b.is_ascii_digit());
+    if (int.is_empty() && frac.is_empty()) || !all_digits(int) || !all_digits(frac) {
+        return Err(not_a_number);
+    }
+    if !(-64..=64).contains(&exponent) {
+        return Err(LogErrorKind::TimeOutOfRange);
+    }
+    // The digits int ++ frac with the point after `point` of them; the
+    // microseconds are the digits before position point + 6, the next one
+    // rounds.
+    let point = i64::try_from(int.len()).unwrap_or(i64::MAX) + i64::from(exponent);
+    let end = point + 6;
+    let digit_at = |k: i64| -> u8 {
+        usize::try_from(k)
+            .ok()
+            .and_then(|k| {
+                if k < int.len() {
+                    int.as_bytes().get(k)
+                } else {
+                    frac.as_bytes().get(k - int.len())
+                }
+            })
+            .map_or(0, |b| b - b'0')
+    };
+    let mut us: i64 = 0;
+    let mut k: i64 = 0;
+    while k < end {
+        // Leading zeros cannot overflow; beyond the written digits pad with 0.
+        us = us
+            .checked_mul(10)
+            .and_then(|v| v.checked_add(i64::from(digit_at(k))))
+            .ok_or(LogErrorKind::TimeOutOfRange)?;
+        k += 1;
+    }
+    if digit_at(end) >= 5 {
+        us = us.checked_add(1).ok_or(LogErrorKind::TimeOutOfRange)?;
+    }
+    Ok(if negative { -us } else { us })
+}
+
+fn parse_header(text: &str) -> Result<heapless::Vec<Column, MAX_COLUMNS>, LogErrorKind> {
+    let mut columns = heapless::Vec::new();
+    for name in text.split(',') {
+        let name = name.trim();
+        if name.parse::<f64>().is_ok() {
+            return Err(LogErrorKind::NoHeader);
+        }
+        let column = Column::from_name(name);
+        if column != Column::Ignored && columns.contains(&column) {
+            return Err(LogErrorKind::DuplicateColumn(column.name()));
+        }
+        columns
+            .push(column)
+            .map_err(|_| LogErrorKind::TooManyColumns)?;
+    }
+    for required in [Column::Time, Column::P1, Column::P2, Column::Angle] {
+        if !columns.contains(&required) {
+            return Err(LogErrorKind::MissingColumn(required.name()));
+        }
+    }
+    Ok(columns)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse_all(text: &str) -> Result<Vec<Record<f64>>, LogError> {
+        let mut p = LogParser::new();
+        let mut out = Vec::new();
+        for line in text.lines() {
+            if let Some(r) = p.feed_line(line)? {
+                out.push(r);
+            }
+        }
+        p.finish()?;
+        Ok(out)
+    }
+
+    #[test]
+    fn any_column_order_comments_and_optional_load() {
+        let r = parse_all(
+            "\u{feff}# a comment\r\nboom_angle_deg, t_s ,note,p2_bar,p1_bar\n\n45.0,0.0,x,5,60\n# c\n45.1,0.01,y,5.1,61\n",
+        )
+        .unwrap();
+        assert_eq!(r.len(), 2);
+        assert_eq!(r[1].line, 6);
+        assert_eq!(
+            r[1].frame,
+            Frame {
+                t: Ticks(10_000),
+                p1_bar: 61.0,
+                p2_bar: 5.1,
+                boom_angle_deg: 45.1
+            }
+        );
+        assert_eq!(r[1].true_load_kg, None);
+    }
+
+    #[test]
+    fn errors_name_line_and_field() {
+        let h = "t_s,p1_bar,p2_bar,boom_angle_deg,true_load_kg\n";
+        let e = parse_all(&format!("# c\n{h}0,1,2,3,4\n0.1,abc,2,3,4\n")).unwrap_err();
+        assert_eq!(
+            e,
+            LogError {
+                line: 4,
+                kind: LogErrorKind::NotANumber(P1_BAR)
+            }
+        );
+        assert_eq!(e.to_string(), "line 4: field `p1_bar` is not a number");
+        let e = parse_all(&format!("{h}0,1,2,3,4\n0.1,1,2\n")).unwrap_err();
+        assert_eq!(
+            e,
+            LogError {
+                line: 3,
+                kind: LogErrorKind::MissingField(BOOM_ANGLE_DEG)
+            }
+        );
+        let e = parse_all(&format!("{h}1,1,2,3,4\n0.5,1,2,3,4\n")).unwrap_err();
+        assert_eq!(
+            e,
+            LogError {
+                line: 3,
+                kind: LogErrorKind::TimeBackwards
+            }
+        );
+        let e = parse_all("t_s,p1_bar,boom_angle_deg\n0,1,2\n").unwrap_err();
+        assert_eq!(
+            e,
+            LogError {
+                line: 1,
+                kind: LogErrorKind::MissingColumn(P2_BAR)
+            }
+        );
+        assert_eq!(
+            parse_all("").unwrap_err(),
+            LogError {
+                line: 1,
+                kind: LogErrorKind::Empty
+            }
+        );
+        assert_eq!(parse_all("# only\n").unwrap_err().kind, LogErrorKind::Empty);
+        assert_eq!(
+            parse_all(h).unwrap_err(),
+            LogError {
+                line: 2,
+                kind: LogErrorKind::NoSamples
+            }
+        );
+        assert_eq!(
+            parse_all("0,1,2,3\n").unwrap_err().kind,
+            LogErrorKind::NoHeader
+        );
+        let e = parse_all(&format!("{h}0,1,2,3,4,5\n")).unwrap_err();
+        assert_eq!(e.kind, LogErrorKind::TooManyFields);
+        let e = parse_all(&format!("{h}0,,2,3,4\n")).unwrap_err();
+        assert_eq!(e.kind, LogErrorKind::EmptyField(P1_BAR));
+    }
+
+    #[test]
+    fn time_is_read_exactly_to_the_microsecond() {
+        let ok = |s: &str| parse_time_us(s).unwrap();
+        assert_eq!(ok("0"), 0);
+        assert_eq!(ok("0.01"), 10_000);
+        assert_eq!(ok("144000.020"), 144_000_020_000);
+        assert_eq!(ok("40003200.01"), 40_003_200_010_000);
+        assert_eq!(ok("-1.5"), -1_500_000);
+        assert_eq!(ok("+.5"), 500_000);
+        assert_eq!(ok("7."), 7_000_000);
+        assert_eq!(ok("1.5e-2"), 15_000);
+        assert_eq!(ok("2E3"), 2_000_000_000);
+        assert_eq!(ok("0.0000005"), 1); // half rounds away from zero
+        assert_eq!(ok("0.00000049999"), 0);
+        assert_eq!(ok("-0.0000005"), -1);
+        assert_eq!(ok("9223372036854.775807"), i64::MAX);
+        assert_eq!(ok("1e-30"), 0);
+        for bad in ["", "-", ".", "1..2", "1e", "0x10", "1,5", "abc", "1 2", "e5"] {
+            assert_eq!(
+                parse_time_us(bad),
+                Err(LogErrorKind::NotANumber(T_S)),
+                "{bad:?}"
+            );
+        }
+        assert_eq!(parse_time_us("inf"), Err(LogErrorKind::TimeNotFinite));
+        assert_eq!(
+            parse_time_us("9223372036854.775808"),
+            Err(LogErrorKind::TimeOutOfRange)
+        );
+        assert_eq!(parse_time_us("1e65"), Err(LogErrorKind::TimeOutOfRange));
+    }
+
+    #[test]
+    fn ticks_are_the_exact_differences_and_wrap() {
+        let h = "t_s,p1_bar,p2_bar,boom_angle_deg\n";
+        // 4294.967296 s = 2^32 µs: the clock wraps between the rows.
+        let r = parse_all(&format!("{h}4294.957296,1,2,3\n4294.977296,1,2,3\n")).unwrap();
+        assert_eq!(r[0].frame.t, Ticks(u32::MAX - 9_999));
+        assert_eq!(r[1].frame.t.since(r[0].frame.t), 20_000);
+        assert_eq!(r[1].t_us, 4_294_977_296);
+        // A duplicate time is data (the limiter faults on it), not an error.
+        let r = parse_all(&format!("{h}1,1,2,3\n1,1,2,3\n")).unwrap();
+        assert_eq!(r[0].frame.t, r[1].frame.t);
+        // A gap of exactly 2^32 µs must not look like no gap: clamped.
+        let r = parse_all(&format!("{h}0,1,2,3\n4294.967296,1,2,3\n")).unwrap();
+        assert_eq!(r[1].frame.t.since(r[0].frame.t), BACKWARDS_FROM_US - 1);
+    }
+
+    #[test]
+    fn nan_sensor_value_is_data_but_nan_time_is_not() {
+        let h = "t_s,p1_bar,p2_bar,boom_angle_deg\n";
+        let r = parse_all(&format!("{h}0,NaN,2,3\n")).unwrap();
+        assert!(r[0].frame.p1_bar.is_nan());
+        assert_eq!(
+            parse_all(&format!("{h}NaN,1,2,3\n")).unwrap_err().kind,
+            LogErrorKind::TimeNotFinite
+        );
+    }
+}
