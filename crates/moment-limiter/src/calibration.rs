@@ -24,20 +24,27 @@
 //! learner runs on recorded logs, after the fact, so it can afford to look
 //! ahead; the limiter cannot and does not need to.)
 //!
-//! A constant zero offset and a per-direction friction cannot be told apart
-//! from these two numbers, and the limiter does not need them apart: it
-//! subtracts offset + friction(up) = r_up while raising and
-//! offset − friction(down) = r_down while lowering, whatever the split. The
-//! learner reports the symmetric split: force_offset = (r_up + r_down)/2,
-//! friction_up = friction_down = max(0, (r_up − r_down)/2). Transducer zero
-//! offsets (bar) and the pendulum offset are not learned (0); a technician
-//! may set them in the calibration file.
+//! **Offset and friction apart.** At rest the seals release (the simulator's
+//! standstill release, and what a settled cylinder does), so the residual
+//! of a still boom is the force offset alone: the learner averages it over
+//! the samples before the first motion of each log and those long after a
+//! stop (the limiter's [`Measurement::static_friction_share`] below 1 %),
+//! r_rest. With at least as many rest samples as the steady minimum, the
+//! calibration is force_offset = r_rest, friction_up = max(0, r_up −
+//! r_rest), friction_down = max(0, r_rest − r_down): a friction per
+//! direction, and the offset the limiter also removes at rest. Without
+//! them, up and down cannot be told from the offset, and the learner
+//! reports the symmetric split force_offset = (r_up + r_down)/2,
+//! friction_up = friction_down = max(0, (r_up − r_down)/2), which is exact
+//! while moving. Transducer zero offsets (bar) and the pendulum offset are
+//! not observable from the force alone and are not learned (0); a
+//! technician may set them in the calibration file.
 
 use crane_model::loads::load_model::HookLoadModel;
 use crane_model::{ModelError, Real};
 
 use crate::io::Measurement;
-use crate::load_estimate::{model_force_terms, Calibration, Direction};
+use crate::load_estimate::{model_force_terms, Calibration, Direction, Friction};
 
 /// Why no calibration could be learned.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -118,6 +125,9 @@ pub struct CalibrationLearner<T> {
     pending: heapless::Deque<Pending<T>, LOOKAHEAD_CAPACITY>,
     up: (T, u32),
     down: (T, u32),
+    rest: (T, u32),
+    /// Sum of the model's piston force per kg over the rest samples.
+    rest_per_kg: T,
 }
 
 impl<T: Real> Default for CalibrationLearner<T> {
@@ -139,6 +149,8 @@ impl<T: Real> CalibrationLearner<T> {
             pending: heapless::Deque::new(),
             up: (T::lit(0.0), 0),
             down: (T::lit(0.0), 0),
+            rest: (T::lit(0.0), 0),
+            rest_per_kg: T::lit(0.0),
         }
     }
 
@@ -154,6 +166,17 @@ impl<T: Real> CalibrationLearner<T> {
             Direction::Down => false,
             Direction::Still => {
                 self.pending.clear();
+                // Before any motion, or with the seals released: the offset.
+                let released = matches!(m.friction, Friction::Static { last_moving: None })
+                    || m.static_friction_share < T::lit(0.01);
+                if released {
+                    let (f, inertia) =
+                        model_force_terms(model, m.boom.angle_rad, m.accel_rad_s2())?;
+                    let r = m.piston_force_n - inertia - f.at_zero;
+                    self.rest.0 += r;
+                    self.rest.1 = self.rest.1.saturating_add(1);
+                    self.rest_per_kg += f.per_kg;
+                }
                 return Ok(());
             }
         };
@@ -197,6 +220,25 @@ impl<T: Real> CalibrationLearner<T> {
         (self.up.1, self.down.1)
     }
 
+    /// Number of samples at rest with the seals released.
+    pub fn rest_count(&self) -> u32 {
+        self.rest.1
+    }
+
+    /// The hook load (kg) the mean rest residual would be (the residual over
+    /// the model's mean force per kg at the rest samples): what a load left
+    /// on the "unloaded" run weighs.
+    pub fn rest_load_kg(&self) -> Option<T> {
+        let per_kg = self.rest_per_kg / T::lit(f64::from(self.rest.1.max(1)));
+        let r = self.mean_rest_residual_n()?;
+        (per_kg > T::lit(0.0)).then(|| r / per_kg)
+    }
+
+    /// Mean residual at rest (N): the force offset, if any rest sample.
+    pub fn mean_rest_residual_n(&self) -> Option<T> {
+        (self.rest.1 > 0).then(|| self.rest.0 / T::lit(f64::from(self.rest.1)))
+    }
+
     /// Mean residuals (r_up, r_down) in N, if both directions have samples.
     pub fn mean_residuals_n(&self) -> Option<(T, T)> {
         let mean = |(s, n): (T, u32)| (n > 0).then(|| s / T::lit(f64::from(n)));
@@ -212,14 +254,22 @@ impl<T: Real> CalibrationLearner<T> {
         }
         let (r_up, r_down) = self.mean_residuals_n().ok_or(CalibrationError::NotFinite)?;
         let half = T::lit(0.5);
-        let offset = (r_up + r_down) * half;
-        let friction = ((r_up - r_down) * half).max(T::lit(0.0));
-        if !(offset.is_finite() && friction.is_finite()) {
+        let zero = T::lit(0.0);
+        let (offset, up, down) = match self.mean_rest_residual_n() {
+            Some(rest) if self.rest.1 >= min_samples.max(1) => {
+                (rest, (r_up - rest).max(zero), (rest - r_down).max(zero))
+            }
+            _ => {
+                let f = ((r_up - r_down) * half).max(zero);
+                ((r_up + r_down) * half, f, f)
+            }
+        };
+        if !(offset.is_finite() && up.is_finite() && down.is_finite()) {
             return Err(CalibrationError::NotFinite);
         }
         Ok(Calibration {
-            friction_up_n: friction,
-            friction_down_n: friction,
+            friction_up_n: up,
+            friction_down_n: down,
             force_offset_n: offset,
             ..Calibration::none()
         })

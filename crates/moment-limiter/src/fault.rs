@@ -23,6 +23,10 @@ pub enum Fault {
     /// hook load is negative, so the estimate (or a sensor or the
     /// calibration) is wrong.
     ImplausibleLoad,
+    /// The signal chain restarted after a fault less than
+    /// [`crate::cycle::SETTLE_S`] ago with the boom moving: the filters'
+    /// start-up is no reading yet.
+    Settling,
     /// The outputs could not be driven.
     Output,
 }
@@ -37,6 +41,7 @@ impl fmt::Display for Fault {
             Fault::Capacity(CapacityError::NotObservable) => f.write_str("capacity not observable"),
             Fault::Clock(c) => write!(f, "{c}"),
             Fault::ImplausibleLoad => f.write_str("load estimate implausibly negative"),
+            Fault::Settling => f.write_str("signal chain settling after a fault"),
             Fault::Output => f.write_str("output driver failed"),
         }
     }

@@ -116,13 +116,17 @@ pub struct Measurement<T> {
     pub direction: Direction,
     /// The friction in the force (see [`crate::load_estimate`]).
     pub friction: Friction,
-    /// The boom state at the time of the filtered force (the angle advanced
-    /// by rate × sensor lag only): what the load estimate hands to the model.
+    /// The share of the last motion's friction still in the force of a
+    /// still boom (1 at the stop, decaying as the seals release).
+    pub static_friction_share: T,
+    /// The boom state at the time of the filtered force (force and angle
+    /// both through the sensor's lag and the filter): what the load estimate
+    /// hands to the model.
     pub boom: BoomState<T>,
     /// The boom state now: what the rated load is computed at.
     pub boom_now: BoomState<T>,
-    /// tan of the predicted load swing at the time of the filtered force
-    /// (0 without the swing observer).
+    /// tan of the load swing the paid-out-rope hypothesis predicts at the
+    /// time of the filtered force (a diagnostic; 0 without the swing geometry).
     pub tan_swing: T,
 }
 

@@ -14,20 +14,18 @@
 //! constant, and a load for which the slope at W = 0 is not positive, or which
 //! no load on the rising branch explains, is not observable (a FAULT).
 //!
-//! **When the boom is still**, the friction is static: anywhere between zero
-//! (the seals relaxed) and the friction of the last motion (the pressure
-//! trapped when the boom stopped), or, with no motion seen since power-up,
-//! anywhere between the two frictions. The limiter takes the middle of that
-//! interval ([`Friction`]), so the force is misread by at most half the
-//! friction; the ×1.05 reading of the load
-//! ([`crate::cycle::LimiterConfig::load_reading_factor`]) keeps such an
-//! error above the true load while half the friction is under 5 % of the
-//! load's share of the force. With 10 kN of friction and 3.3 t that holds
-//! below about 65° (half the friction is 2.5 % of the load at 40°, 3.9 % at
-//! 60°) and not above: 10 % at 80°, where the load has the shortest arm — a
-//! still boom there may read up to 5 % under the load, and only a friction
-//! measured at standstill would close that. Taking the conservative end
-//! instead read a 90 %-rated load at 80° at power-up as OVERLOAD (1.004).
+//! **When the boom is still**, the seals release: the friction the last
+//! motion left in the force relaxes to zero within about a second (the
+//! pressure settles to what holds the load), and before any motion there is
+//! none. The limiter removes the last motion's friction times a share that
+//! is 1 when the filtered rate says the boom stopped and decays with
+//! [`crate::cycle::LimiterConfig::seal_release_s`] (the filtered force
+//! lags the stop by as much as the filtered rate does). Taking half the
+//! sliding friction for ever (the old rule) read a 30 % load at 80° after
+//! raising at 0.64–0.87 of itself: half the friction is a large share of a
+//! short-armed load. A cylinder whose seals stay stuck after lowering
+//! reads low by the lowering friction's share of the load (the ×1.05
+//! reading covers 5 %); one stuck after raising reads high.
 //!
 //! **A swinging load** pulls the tip sideways too: the piston force grows by
 //! (F_model(W) − at_zero)·tan θ·tan φ ([`crate::swing`]), so the load part of
@@ -198,18 +196,16 @@ impl<T: Real> Calibration<T> {
     }
 
     /// The friction (N) the estimate removes: the sliding friction when
-    /// moving, the middle of the possible static friction when still (see
-    /// the module doc).
-    pub fn correction_n(&self, friction: Friction) -> T {
-        let half = T::lit(0.5);
+    /// moving; when still, the last motion's friction times
+    /// `static_share` (1 at the stop, decaying to 0 as the seals release;
+    /// see the module doc), none before any motion.
+    pub fn correction_n(&self, friction: Friction, static_share: T) -> T {
         match friction {
             Friction::Sliding(d) => self.friction_n(d),
             Friction::Static {
                 last_moving: Some(d),
-            } => self.friction_n(d) * half,
-            Friction::Static { last_moving: None } => {
-                (self.friction_n(Direction::Up) + self.friction_n(Direction::Down)) * half
-            }
+            } => self.friction_n(d) * static_share,
+            Friction::Static { last_moving: None } => T::lit(0.0),
         }
     }
 }
@@ -255,15 +251,44 @@ pub fn estimate_load_kg<T: Real>(
     friction: Friction,
     tan_swing: T,
 ) -> Result<T, EstimateError> {
+    let (f, force) = load_equation(
+        terms,
+        accel_rad_s2,
+        force_n,
+        calibration,
+        friction,
+        T::lit(0.0),
+    )?;
+    let f = f.scale_load_part(T::lit(1.0) + terms.tan_angle * tan_swing);
+    f.solve(force).ok_or(EstimateError::NotObservable)
+}
+
+/// The two sides of the load equation at rest (see the module doc): the
+/// model's piston force at rest as a function of W, and the measured force
+/// less the boom's inertia J·θ̈, the offset and the friction. The load W
+/// solves `at_rest(W) = force` once the load part of `at_rest` is scaled for
+/// the swing (and, for [`crate::static_load`], the load's vertical
+/// acceleration).
+pub fn load_equation<T: Real>(
+    terms: &LoadTerms<T>,
+    accel_rad_s2: T,
+    force_n: T,
+    calibration: &Calibration<T>,
+    friction: Friction,
+    static_share: T,
+) -> Result<(Quadratic<T>, T), EstimateError> {
     let inertia = terms.piston_force_per_boom_accel * accel_rad_s2;
-    let f = terms
-        .piston_force
-        .scale_load_part(T::lit(1.0) + terms.tan_angle * tan_swing);
+    let f = terms.piston_force;
     if !(f.at_zero.is_finite() && inertia.is_finite()) {
         return Err(EstimateError::NotObservable);
     }
-    let force = force_n - inertia - calibration.force_offset_n - calibration.correction_n(friction);
-    f.solve(force).ok_or(EstimateError::NotObservable)
+    Ok((
+        f,
+        force_n
+            - inertia
+            - calibration.force_offset_n
+            - calibration.correction_n(friction, static_share),
+    ))
 }
 
 #[cfg(test)]
@@ -290,17 +315,24 @@ mod tests {
     }
 
     #[test]
-    fn static_friction_is_corrected_by_the_middle_of_its_interval() {
+    fn static_friction_is_the_last_motions_times_its_share() {
         let cal = Calibration {
             friction_up_n: 12.0,
             friction_down_n: 8.0,
             ..Calibration::<f64>::none()
         };
-        let at = |last_moving| cal.correction_n(Friction::Static { last_moving });
-        assert_eq!(cal.correction_n(Friction::Sliding(Direction::Up)), 12.0);
-        assert_eq!(cal.correction_n(Friction::Sliding(Direction::Down)), -8.0);
-        assert_eq!(at(Some(Direction::Up)), 6.0);
-        assert_eq!(at(Some(Direction::Down)), -4.0);
-        assert_eq!(at(None), 2.0);
+        let at = |last_moving, share| cal.correction_n(Friction::Static { last_moving }, share);
+        assert_eq!(
+            cal.correction_n(Friction::Sliding(Direction::Up), 0.3),
+            12.0
+        );
+        assert_eq!(
+            cal.correction_n(Friction::Sliding(Direction::Down), 0.3),
+            -8.0
+        );
+        assert_eq!(at(Some(Direction::Up), 1.0), 12.0);
+        assert_eq!(at(Some(Direction::Up), 0.5), 6.0);
+        assert_eq!(at(Some(Direction::Down), 0.25), -2.0);
+        assert_eq!(at(None, 1.0), 0.0);
     }
 }

@@ -36,7 +36,9 @@
 //! knows nothing of swing caused otherwise (slewing, wind, a load lifted off
 //! the ground while swinging). Like the model it is undamped, so a
 //! prediction error persists until the next reset; the correction is clamped
-//! to |tan φ| ≤ 0.2 (11°). These limits are stated in the crate's README and
+//! to |tan φ| ≤ 0.5 (27°; it was 0.2 while this observer was the only one:
+//! now it is one hypothesis of [`crate::static_load`], chosen only while its
+//! load stays the steadiest). These limits are stated in the crate's README and
 //! belong to the certification argument: the observer removes the swing the
 //! luffing motion itself causes, which is what the thesis maneuvers show.
 
@@ -77,6 +79,12 @@ impl<T: Real> SwingGeometry<T> {
     }
 
     /// Tip position relative to A0 (horizontal) and hanging length (m).
+    /// Height of the tip C above the ground at boom angle `angle_rad` (m).
+    pub fn tip_height_m(&self, angle_rad: T) -> T {
+        let (sin, _) = angle_rad.sin_cos_own();
+        self.foot_height_m + self.boom_length_m * sin
+    }
+
     fn tip(&self, angle_rad: T) -> (T, T) {
         // Own-precision trigonometry: libm's f32 sin/cos run f64 kernels.
         let (sin, cos) = angle_rad.sin_cos_own();
@@ -87,7 +95,7 @@ impl<T: Real> SwingGeometry<T> {
 }
 
 /// Largest |tan φ| the observer reports.
-pub const MAX_TAN_SWING: f64 = 0.2;
+pub const MAX_TAN_SWING: f64 = 0.5;
 
 /// The swing state: load position and velocity, last tip position.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -109,6 +117,15 @@ impl<T: Real> SwingObserver<T> {
     /// Forgets the swing: the next update starts with the load hanging still.
     pub fn reset(&mut self) {
         self.state = None;
+    }
+
+    /// Moves the tip to `angle_rad` at once, keeping the load's position and
+    /// velocity relative to it (a restart of the filtered angle, not a move).
+    pub fn rebase(&mut self, angle_rad: T) {
+        if let Some((x, v, xc0, _)) = self.state {
+            let (xc1, l1) = self.geometry.tip(angle_rad);
+            self.state = Some((x + (xc1 - xc0), v, xc1, l1));
+        }
     }
 
     /// Advances to boom angle `angle_rad`, `dt_s` after the previous update;

@@ -31,6 +31,12 @@ use moment_limiter::tools::config_file;
 
 use super::replay::read_line;
 
+/// Largest plausible force offset of an empty hook at rest (N): transducer
+/// zero tolerances (2 % of span, ±4 bar ≈ ±17 kN on the piston side) are
+/// far above what a calibrated crane shows (±2 kN); 10 kN is about 250 kg
+/// at 60°.
+const REST_RESIDUAL_LIMIT_N: f64 = 10_000.0;
+
 /// Arguments of `crane-sim calibrate`.
 #[derive(clap::Args, Debug)]
 pub struct CalibrateArgs {
@@ -57,6 +63,9 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
         let mut reader = BufReader::new(file);
         let mut buf = Vec::new();
         let mut faulted = 0u32;
+        // Mean pressures of the log: an unloaded boom hangs on the piston
+        // side, so p1 far above p2 (p2 above p1: the columns are swapped).
+        let (mut p1_sum, mut p2_sum, mut n_p) = (0.0f64, 0.0f64, 0u32);
         loop {
             let line = match read_line(&mut reader, &mut buf) {
                 Ok(Some(line)) => line,
@@ -76,6 +85,9 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
                     record.line
                 );
             }
+            p1_sum += record.frame.p1_bar;
+            p2_sum += record.frame.p2_bar;
+            n_p += 1;
             let report = limiter.step_frame(&record.frame);
             // An implausibly negative load is the limiter's verdict on an
             // uncalibrated estimate; the learner needs the measurement itself.
@@ -89,14 +101,31 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
         parser
             .finish()
             .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
+        if n_p > 0 {
+            let (p1, p2) = (p1_sum / f64::from(n_p), p2_sum / f64::from(n_p));
+            anyhow::ensure!(
+                p1 > p2,
+                "{name}: p1 (piston side) reads {p1:.1} bar on average and p2 (rod side) {p2:.1} bar: the boom hangs on the piston side, so p1_bar and p2_bar look swapped (check the wiring or the log's columns)"
+            );
+        }
         learner.end_of_log();
         if faulted > 0 {
             eprintln!("warning: {name}: {faulted} samples with a sensor or model fault left out");
         }
     }
+    // A load on the hook reads as a large force at rest: refuse it before
+    // it becomes an offset.
+    if let (Some(rest), Some(kg)) = (learner.mean_rest_residual_n(), learner.rest_load_kg()) {
+        anyhow::ensure!(
+            rest.abs() <= REST_RESIDUAL_LIMIT_N,
+            "the boom at rest reads {:.1} kN above the empty crane's model (about {kg:.0} kg on the hook; at most {:.0} kN of offset is plausible): calibration needs runs with an empty hook",
+            rest / 1e3,
+            REST_RESIDUAL_LIMIT_N / 1e3
+        );
+    }
     let cal = learner
         .finish(args.min_samples)
-        .map_err(|e| anyhow::anyhow!("{e}"))?;
+        .map_err(|e| anyhow::anyhow!("{e}; each direction needs at least {} samples of steady luffing (1.5 s after the start, ≥ 0.5 °/s)", args.min_samples))?;
     let (samples_up, samples_down) = learner.counts();
     // Only a file the reader (host and firmware) accepts is written.
     config_file::check_calibration(&cal).map_err(|e| {

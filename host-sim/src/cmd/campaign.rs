@@ -215,7 +215,7 @@ impl Crane {
     /// The `synth` flags of this crane's recording chain.
     fn synth_flags(&self) -> String {
         let mut s = format!(
-            "--friction-law {} --friction-up-n {:.1} --friction-down-n {:.1} --friction-up-b {:.5} --friction-down-b {:.5} --standstill-release-s {:.4} --noise-bar {:.4} --noise-deg {:.5} --angle-offset-deg {:.5} --pressure-offset-bar {:.5} --pendulum {}",
+            "--friction-law {} --friction-up-n {:.1} --friction-down-n {:.1} --friction-up-b {:.5} --friction-down-b {:.5} --standstill-release-s {:.4} --noise-bar {:.4} --noise-deg {:.5} --angle-offset-deg={:.5} --pressure-offset-bar={:.5} --pendulum {}",
             self.friction, self.friction_up_a_n, self.friction_down_a_n, self.friction_up_b, self.friction_down_b, self.standstill_release_s, self.noise_bar, self.noise_deg, self.angle_offset_deg, self.pressure_offset_bar, self.pendulum
         );
         match self.sensors.pendulum {
@@ -246,6 +246,10 @@ struct Scenario {
     hold_after_s: f64,
     noise_seed: u32,
 }
+
+/// A lift-off of an over-rated load must be cut within this time (s) of the
+/// load leaving the ground (issue 11).
+const LIFT_OFF_CUT_S: f64 = 1.0;
 
 /// Rest before the move (the limiter settles) and after it (s).
 const HOLD_BEFORE_S: f64 = 2.0;
@@ -458,8 +462,20 @@ struct Grade {
     fault: bool,
     /// The first fault the limiter reported.
     first_fault: Option<String>,
-    /// The true u reached 1.05 during the lift-off.
+    /// A lift-off missed by the lift-off rule (issue 11): the true u reached
+    /// 1.05 while the hoist took the load up, and no OVERLOAD (nor FAULT)
+    /// came within 1 s of the load leaving the ground.
     missed_in_lift_off: bool,
+    /// The true u reached 1.05 while the hoist took the load up (the
+    /// scenario is graded by the lift-off rule).
+    lift_off_overload: bool,
+    /// Such a lift-off reached u = 1.05 before the limiter cut: what the
+    /// luffing rule (SAE J159's 1.05) would call missed. Reported, not
+    /// counted in `missed`.
+    lift_off_past_1_05_uncut: bool,
+    /// First OVERLOAD (or FAULT) − the load leaving the ground (s), for a
+    /// graded lift-off.
+    lift_off_delay_s: Option<f64>,
     #[serde(skip)]
     band_motion: Vec<f32>,
     #[serde(skip)]
@@ -475,6 +491,9 @@ fn grade(sc: &Scenario, rows: &[SynthRow], out: &[limiter_adapter::Output], rate
     let rest_before = (sc.lift_off_s.map_or(1.0, |l| l + 1.0), t_luff);
     let mut prev = State::Normal;
     let mut prev_load = rows.first().map_or(0.0, |r| r.true_load_kg);
+    // The load leaves the ground when the hoist has taken all its weight.
+    let leaves_ground_s = sc.lift_off_s;
+    let mut first_cut_s: Option<f64> = None;
     for (k, (r, o)) in rows.iter().zip(out).enumerate() {
         let rated_now = rated.at_deg(r.truth.boom_angle_rad.to_degrees());
         let u = r.true_load_kg / rated_now;
@@ -489,10 +508,14 @@ fn grade(sc: &Scenario, rows: &[SynthRow], out: &[limiter_adapter::Output], rate
         if u >= 1.05 && g.t_true_1_05_s.is_none() {
             g.t_true_1_05_s = Some(r.t_s);
             // A FAULT cuts the motion as an OVERLOAD does (fail-safe): not a miss.
+            // The crossing came with the hook load growing: the hoist was taking it up.
+            g.lift_off_overload = r.true_load_kg > prev_load;
             if g.first_overload_s.is_none() && !g.fault {
-                g.missed = true;
-                // The crossing came with the hook load growing: the hoist was taking it up.
-                g.missed_in_lift_off = r.true_load_kg > prev_load;
+                if g.lift_off_overload {
+                    g.lift_off_past_1_05_uncut = true;
+                } else {
+                    g.missed = true;
+                }
             }
         }
         if o.state != prev {
@@ -517,6 +540,9 @@ fn grade(sc: &Scenario, rows: &[SynthRow], out: &[limiter_adapter::Output], rate
                 State::Fault => g.fault = true,
                 _ => {}
             }
+            if matches!(o.state, State::Overload | State::Fault) && first_cut_s.is_none() {
+                first_cut_s = Some(r.t_s);
+            }
             prev = o.state;
         }
         prev_load = r.true_load_kg;
@@ -528,6 +554,14 @@ fn grade(sc: &Scenario, rows: &[SynthRow], out: &[limiter_adapter::Output], rate
             } else if t >= rest_after || (t >= rest_before.0 && t <= rest_before.1) {
                 g.band_rest.push(ratio);
             }
+        }
+    }
+    // The lift-off rule: OVERLOAD (or FAULT) within 1 s of the load leaving the ground.
+    if let (true, Some(t_off)) = (g.lift_off_overload, leaves_ground_s) {
+        g.lift_off_delay_s = first_cut_s.map(|t| t - t_off);
+        if g.lift_off_delay_s.is_none_or(|d| d > LIFT_OFF_CUT_S) {
+            g.missed = true;
+            g.missed_in_lift_off = true;
         }
     }
     if let (Some(t0), Some(t1)) = (g.t_true_overload_s, g.first_overload_s) {
@@ -561,29 +595,142 @@ fn percentiles(v: &mut [f32]) -> [f64; 3] {
     [at(0.05), at(0.5), at(0.95)]
 }
 
+/// Counts and distributions over a set of scenarios (the campaign, or one
+/// rope mode and friction law).
+#[derive(Debug, Default)]
+struct Tally {
+    scenarios: usize,
+    overload_scenarios: usize,
+    missed: usize,
+    missed_in_lift_off: usize,
+    lift_off_overloads: usize,
+    lift_off_past_1_05_uncut: usize,
+    late: usize,
+    early: usize,
+    false_overloads: usize,
+    calm_scenarios: usize,
+    false_in_calm: usize,
+    warnings: usize,
+    warnings_below_0_8: usize,
+    faults: usize,
+    motion: Vec<f32>,
+    rest: Vec<f32>,
+    delays: Vec<f32>,
+    lift_off_delays: Vec<f32>,
+}
+
+impl Tally {
+    fn add(&mut self, g: &Grade) {
+        self.scenarios += 1;
+        self.overload_scenarios += usize::from(g.t_true_overload_s.is_some());
+        self.missed += usize::from(g.missed);
+        self.missed_in_lift_off += usize::from(g.missed_in_lift_off);
+        self.lift_off_overloads += usize::from(g.lift_off_overload);
+        self.lift_off_past_1_05_uncut += usize::from(g.lift_off_past_1_05_uncut);
+        self.late += usize::from(g.late);
+        self.early += usize::from(g.early);
+        self.false_overloads += usize::from(g.false_overload);
+        let calm = g.max_true_utilization <= 0.85;
+        self.calm_scenarios += usize::from(calm);
+        self.false_in_calm += usize::from(calm && g.false_overload);
+        self.warnings += usize::from(g.warning_onsets > 0);
+        self.warnings_below_0_8 += usize::from(g.warnings_below_0_8 > 0);
+        self.faults += usize::from(g.fault);
+        if let Some(d) = g.detection_delay_s {
+            self.delays.push(d as f32);
+        }
+        if let Some(d) = g.lift_off_delay_s {
+            self.lift_off_delays.push(d as f32);
+        }
+        self.motion.extend_from_slice(&g.band_motion);
+        self.rest.extend_from_slice(&g.band_rest);
+    }
+
+    fn summary(mut self) -> TallySummary {
+        let max = |v: &[f32]| v.last().map_or(f64::NAN, |d| f64::from(*d));
+        let delays = percentiles(&mut self.delays);
+        let lift = percentiles(&mut self.lift_off_delays);
+        TallySummary {
+            scenarios: self.scenarios,
+            overload_scenarios: self.overload_scenarios,
+            missed_overloads: self.missed,
+            missed_in_lift_off: self.missed_in_lift_off,
+            lift_off_overloads: self.lift_off_overloads,
+            lift_off_past_1_05_uncut: self.lift_off_past_1_05_uncut,
+            late_overloads: self.late,
+            early_overloads: self.early,
+            false_overloads: self.false_overloads,
+            scenarios_u_max_le_0_85: self.calm_scenarios,
+            false_overloads_u_max_le_0_85: self.false_in_calm,
+            warnings: self.warnings,
+            warnings_below_0_8: self.warnings_below_0_8,
+            faults: self.faults,
+            band_motion_p5_p50_p95: percentiles(&mut self.motion),
+            band_rest_p5_p50_p95: percentiles(&mut self.rest),
+            detection_delay_s_p5_p50_p95: delays,
+            detection_delay_s_max: max(&self.delays),
+            lift_off_delay_s_p5_p50_p95: lift,
+            lift_off_delay_s_max: max(&self.lift_off_delays),
+        }
+    }
+}
+
+/// The grades of a set of scenarios.
+#[derive(Debug, Serialize)]
+struct TallySummary {
+    scenarios: usize,
+    overload_scenarios: usize,
+    /// Overloads missed: while luffing or at rest, true u reached 1.05 with no
+    /// OVERLOAD (nor FAULT); in a lift-off, no OVERLOAD within 1 s of the load
+    /// leaving the ground.
+    missed_overloads: usize,
+    /// Of the missed overloads, the lift-offs (the 1 s rule).
+    missed_in_lift_off: usize,
+    /// Lift-offs in which true u reached 1.05 while the hoist took the load up.
+    lift_off_overloads: usize,
+    /// Of those, the ones in which u reached 1.05 before the limiter cut (the
+    /// luffing rule's miss; reported, not in `missed_overloads`).
+    lift_off_past_1_05_uncut: usize,
+    late_overloads: usize,
+    early_overloads: usize,
+    false_overloads: usize,
+    /// Scenarios whose true u stays ≤ 0.85 throughout.
+    scenarios_u_max_le_0_85: usize,
+    /// Of those, the ones with a (false) OVERLOAD.
+    false_overloads_u_max_le_0_85: usize,
+    warnings: usize,
+    warnings_below_0_8: usize,
+    faults: usize,
+    band_motion_p5_p50_p95: [f64; 3],
+    band_rest_p5_p50_p95: [f64; 3],
+    detection_delay_s_p5_p50_p95: [f64; 3],
+    detection_delay_s_max: f64,
+    /// First OVERLOAD (or FAULT) − the load leaving the ground, in the graded lift-offs (s).
+    lift_off_delay_s_p5_p50_p95: [f64; 3],
+    lift_off_delay_s_max: f64,
+}
+
+/// One rope mode and friction law.
+#[derive(Debug, Serialize)]
+struct GroupSummary {
+    rope: &'static str,
+    friction: &'static str,
+    #[serde(flatten)]
+    grades: TallySummary,
+}
+
 /// The campaign's summary object.
 #[derive(Debug, Serialize)]
 struct Summary {
     r#type: &'static str,
     seed: u64,
     shard: String,
-    scenarios: usize,
     cranes: usize,
-    overload_scenarios: usize,
-    missed_overloads: usize,
-    /// Of the missed overloads, those where u reached 1.05 while the hoist took the load up.
-    missed_in_lift_off: usize,
-    late_overloads: usize,
-    early_overloads: usize,
-    false_overloads: usize,
-    warnings: usize,
-    warnings_below_0_8: usize,
-    faults: usize,
     failed_simulations: usize,
-    band_motion_p5_p50_p95: [f64; 3],
-    band_rest_p5_p50_p95: [f64; 3],
-    detection_delay_s_p5_p50_p95: [f64; 3],
-    detection_delay_s_max: f64,
+    #[serde(flatten)]
+    all: TallySummary,
+    /// The same grades by rope mode and friction law.
+    groups: Vec<GroupSummary>,
 }
 
 fn parse_shard(s: Option<&str>) -> Result<(usize, usize)> {
@@ -675,60 +822,55 @@ fn run_campaign(args: &CampaignArgs, progress: bool) -> Result<(Summary, Vec<Str
     let ms = |i: usize| phase_ns[i].load(std::sync::atomic::Ordering::Relaxed) as f64 * 1e-6 / indices.len().max(1) as f64;
     eprintln!("campaign: per scenario (thread time): simulation {:.1} ms, synthesis {:.1} ms, limiter {:.1} ms, grading {:.2} ms", ms(0), ms(1), ms(2), ms(3));
     let mut lines = Vec::new();
-    let (mut motion, mut rest, mut delays) = (Vec::new(), Vec::new(), Vec::new());
-    let mut s = Summary {
-        r#type: "summary",
-        seed: args.seed,
-        shard: format!("{k}/{n}"),
-        scenarios: indices.len(),
-        cranes: cranes.len(),
-        overload_scenarios: 0,
-        missed_overloads: 0,
-        missed_in_lift_off: 0,
-        late_overloads: 0,
-        early_overloads: 0,
-        false_overloads: 0,
-        warnings: 0,
-        warnings_below_0_8: 0,
-        faults: 0,
-        failed_simulations: 0,
-        band_motion_p5_p50_p95: [f64::NAN; 3],
-        band_rest_p5_p50_p95: [f64::NAN; 3],
-        detection_delay_s_p5_p50_p95: [f64::NAN; 3],
-        detection_delay_s_max: f64::NAN,
-    };
+    let mut all = Tally::default();
+    const GROUPS: [(&str, &str); 4] = [("thesis", "constant"), ("thesis", "seal"), ("held", "constant"), ("held", "seal")];
+    let mut groups: [Tally; 4] = Default::default();
+    let mut failed_simulations = 0;
     for r in results {
-        let (sc, mut g, synth) = match r {
+        let (sc, g, synth) = match r {
             Ok(v) => v,
             Err(e) => {
                 eprintln!("warning: {e:#}");
-                s.failed_simulations += 1;
+                failed_simulations += 1;
                 continue;
             }
         };
-        s.overload_scenarios += usize::from(g.t_true_overload_s.is_some());
-        s.missed_overloads += usize::from(g.missed);
-        s.missed_in_lift_off += usize::from(g.missed_in_lift_off);
-        s.late_overloads += usize::from(g.late);
-        s.early_overloads += usize::from(g.early);
-        s.false_overloads += usize::from(g.false_overload);
-        s.warnings += usize::from(g.warning_onsets > 0);
-        s.warnings_below_0_8 += usize::from(g.warnings_below_0_8 > 0);
-        s.faults += usize::from(g.fault);
-        if let Some(d) = g.detection_delay_s {
-            delays.push(d as f32);
+        all.add(&g);
+        let friction = cranes[sc.crane].friction;
+        if let Some(t) = GROUPS.iter().position(|&(r, f)| r == sc.rope && f == friction).and_then(|i| groups.get_mut(i)) {
+            t.add(&g);
         }
-        motion.append(&mut g.band_motion);
-        rest.append(&mut g.band_rest);
         if args.json {
             lines.push(serde_json::to_string(&ScenarioRecord { r#type: "scenario", scenario: &sc, grade: &g, synth })?);
         }
     }
-    s.band_motion_p5_p50_p95 = percentiles(&mut motion);
-    s.band_rest_p5_p50_p95 = percentiles(&mut rest);
-    s.detection_delay_s_p5_p50_p95 = percentiles(&mut delays);
-    s.detection_delay_s_max = delays.last().map_or(f64::NAN, |d| f64::from(*d));
+    let s = Summary {
+        r#type: "summary",
+        seed: args.seed,
+        shard: format!("{k}/{n}"),
+        cranes: cranes.len(),
+        failed_simulations,
+        all: all.summary(),
+        groups: GROUPS.iter().zip(groups).map(|(&(rope, friction), t)| GroupSummary { rope, friction, grades: t.summary() }).collect(),
+    };
     Ok((s, lines))
+}
+
+/// The grades as text.
+fn write_tally(out: &mut impl Write, t: &TallySummary) -> std::io::Result<()> {
+    let p = |v: [f64; 3]| format!("{:.3} / {:.3} / {:.3}", v[0], v[1], v[2]);
+    writeln!(out, "overloads         {} scenarios reach true u ≥ 1.0", t.overload_scenarios)?;
+    writeln!(out, "missed            {} ({} lift-offs not cut within 1 s of the load leaving the ground; the others: true u reached 1.05 with no OVERLOAD)", t.missed_overloads, t.missed_in_lift_off)?;
+    writeln!(out, "lift-offs         {} reached true u ≥ 1.05 while hoisting; {} of them before the limiter cut (the 1.05 rule; not in missed)", t.lift_off_overloads, t.lift_off_past_1_05_uncut)?;
+    writeln!(out, "late              {} (OVERLOAD > 0.2 s after true u = 1.0)", t.late_overloads)?;
+    writeln!(out, "early             {} (OVERLOAD while 0.85 < true u < 1/1.1)", t.early_overloads)?;
+    writeln!(out, "false             {} (OVERLOAD while true u ≤ 0.85); {} of the {} scenarios whose true u stays ≤ 0.85", t.false_overloads, t.false_overloads_u_max_le_0_85, t.scenarios_u_max_le_0_85)?;
+    writeln!(out, "warnings          {} scenarios ({} while true u < 0.8)", t.warnings, t.warnings_below_0_8)?;
+    writeln!(out, "faults            {}", t.faults)?;
+    writeln!(out, "band in motion    {} (estimate/true, p5 / p50 / p95)", p(t.band_motion_p5_p50_p95))?;
+    writeln!(out, "band at rest      {}", p(t.band_rest_p5_p50_p95))?;
+    writeln!(out, "detection delay   {} s (p5 / p50 / p95), max {:.3} s", p(t.detection_delay_s_p5_p50_p95), t.detection_delay_s_max)?;
+    writeln!(out, "lift-off delay    {} s after leaving the ground (p5 / p50 / p95), max {:.3} s", p(t.lift_off_delay_s_p5_p50_p95), t.lift_off_delay_s_max)
 }
 
 /// Runs the subcommand; returns the exit code (0; the grades are in the output).
@@ -746,21 +888,15 @@ pub fn run(args: CampaignArgs) -> Result<u8> {
         }
         let _ = writeln!(out, "{}", serde_json::to_string(&summary)?);
     } else {
-        let p = |v: [f64; 3]| format!("{:.3} / {:.3} / {:.3}", v[0], v[1], v[2]);
-        let _ = writeln!(out, "campaign          seed {}, shard {}, {} scenarios on {} cranes", summary.seed, summary.shard, summary.scenarios, summary.cranes);
-        let _ = writeln!(out, "overloads         {} scenarios reach true u ≥ 1.0", summary.overload_scenarios);
-        let _ = writeln!(out, "missed            {} (true u reached 1.05 with no OVERLOAD; {} of them in a lift-off)", summary.missed_overloads, summary.missed_in_lift_off);
-        let _ = writeln!(out, "late              {} (OVERLOAD > 0.2 s after true u = 1.0)", summary.late_overloads);
-        let _ = writeln!(out, "early             {} (OVERLOAD while 0.85 < true u < 1/1.1)", summary.early_overloads);
-        let _ = writeln!(out, "false             {} (OVERLOAD while true u ≤ 0.85)", summary.false_overloads);
-        let _ = writeln!(out, "warnings          {} scenarios ({} while true u < 0.8)", summary.warnings, summary.warnings_below_0_8);
-        let _ = writeln!(out, "faults            {}", summary.faults);
+        let _ = writeln!(out, "campaign          seed {}, shard {}, {} scenarios on {} cranes", summary.seed, summary.shard, summary.all.scenarios, summary.cranes);
         let _ = writeln!(out, "failed runs       {}", summary.failed_simulations);
-        let _ = writeln!(out, "band in motion    {} (estimate/true, p5 / p50 / p95)", p(summary.band_motion_p5_p50_p95));
-        let _ = writeln!(out, "band at rest      {}", p(summary.band_rest_p5_p50_p95));
-        let _ = writeln!(out, "detection delay   {} s (p5 / p50 / p95), max {:.3} s", p(summary.detection_delay_s_p5_p50_p95), summary.detection_delay_s_max);
+        let _ = write_tally(&mut out, &summary.all);
+        for g in &summary.groups {
+            let _ = writeln!(out, "\nrope {}, friction {}: {} scenarios", g.rope, g.friction, g.grades.scenarios);
+            let _ = write_tally(&mut out, &g.grades);
+        }
     }
-    eprintln!("campaign: {} scenarios in {elapsed:.1} s ({:.1} ms each, {} threads)", summary.scenarios, 1e3 * elapsed / summary.scenarios.max(1) as f64, rayon::current_num_threads());
+    eprintln!("campaign: {} scenarios in {elapsed:.1} s ({:.1} ms each, {} threads)", summary.all.scenarios, 1e3 * elapsed / summary.all.scenarios.max(1) as f64, rayon::current_num_threads());
     Ok(0)
 }
 

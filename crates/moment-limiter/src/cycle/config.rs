@@ -50,8 +50,13 @@ pub struct LimiterConfig<T> {
     /// (the sensor's data; see [`super::Limiter`] "Time alignment"). 0 for a sensor
     /// without lag.
     pub angle_sensor_lag_s: T,
-    /// Crane geometry for the load-swing observer ([`crate::swing`]); `None`
-    /// turns the swing correction off.
+    /// Time constant (s) with which the friction of the last motion is taken
+    /// to leave the force once the boom is still (the seals release; see
+    /// [`crate::load_estimate`]).
+    pub seal_release_s: T,
+    /// Crane geometry for the bank of rope hypotheses and their swing
+    /// observers ([`crate::static_load`]); `None` turns the rope and swing
+    /// corrections off (the load taken hanging straight and still).
     pub swing: Option<SwingGeometry<T>>,
     /// Safety factor and chart.
     pub capacity: Capacity<T>,
@@ -89,6 +94,7 @@ impl<T: Real> LimiterConfig<T> {
             filter_stages: 4,
             direction: DirectionThresholds::standard(),
             angle_sensor_lag_s: T::lit(2.0 * 0.7 / (2.0 * core::f64::consts::PI * 2.0)),
+            seal_release_s: T::lit(0.5),
             swing: Some(SwingGeometry::coles_930()),
             capacity: Capacity::standard(),
             thresholds: Thresholds::standard(),
@@ -115,6 +121,7 @@ impl<T: Real> LimiterConfig<T> {
                 self.angle_sensor_lag_s.is_finite() && self.angle_sensor_lag_s >= T::lit(0.0),
                 "angle_sensor_lag_s",
             ),
+            (hz(self.seal_release_s), "seal_release_s"),
             (self.swing.is_none_or(|g| g.is_valid()), "swing"),
             (self.capacity.is_valid(), "capacity"),
             (self.thresholds.is_valid(), "thresholds"),

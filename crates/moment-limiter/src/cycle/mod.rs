@@ -6,8 +6,8 @@
 //!    checks ([`crate::checks`]);
 //! 2. **piston force** (eq. 4.1, [`crate::piston_force`]) and low-pass filters
 //!    on force and angle ([`crate::filter`]); angle rate and direction;
-//! 3. **hook load** from the model's affine piston force
-//!    ([`crate::load_estimate`]);
+//! 3. **hook load** from the model's piston force ([`crate::load_estimate`]),
+//!    the static hook mass whatever the rope ([`crate::static_load`]);
 //! 4. **rated load** from the model's affine jack reaction
 //!    ([`crate::capacity`]);
 //! 5. **utilization and state** ([`crate::state_machine`]), outputs;
@@ -53,14 +53,19 @@ use crate::event_log::{Event, EventKind, EventLog};
 use crate::fault::Fault;
 use crate::filter::LowPass;
 use crate::io::{Channel, Frame, Measurement, OutputCommand, OutputError, Outputs, SensorInputs};
-use crate::load_estimate::{estimate_load_kg, DirectionDetector, EstimateError};
+use crate::load_estimate::{load_equation, Direction, DirectionDetector, EstimateError};
 use crate::negative_load::NegativeLoadMonitor;
 use crate::state_machine::{CycleInput, LimiterState, StateMachine};
-use crate::swing::SwingObserver;
+use crate::static_load::{LoadTerms as BankTerms, StaticLoadBank};
 use crate::units::{BoomAngle, PressureBar};
 
 
 
+
+/// Time after a restart of the signal chain (a fault) during which a moving
+/// boom's estimate is no reading (s): three delays of the standard filter
+/// and the sensor lag (0.64 s), when its start-up transient has died out.
+pub const SETTLE_S: f64 = 2.0;
 
 /// Checked readings of one cycle.
 type Readings<T> = (PressureBar<T>, PressureBar<T>, BoomAngle<T>);
@@ -77,22 +82,35 @@ type Readings<T> = (PressureBar<T>, PressureBar<T>, BoomAngle<T>);
 /// filtered angle by
 /// d plus the angle sensor's own lag (the pendulum's 2ζ/ω_n, 0.111 s): left
 /// alone, the model was evaluated 0.111 s × 4.3 °/s ≈ 0.48° away from the
-/// force's angle, ≈ 1 kN of error unloaded. So the model gets the angle
-/// advanced by ω × sensor lag (the force's instant), and the rated load the
-/// angle advanced by ω × (sensor lag + d) (the present instant: lowering, the
-/// rated load falls, and it must not be read late). The same filter on force
-/// and angle keeps both delays equal whatever the cut-off.
+/// force's angle, ≈ 1 kN of error unloaded. Advancing the angle by
+/// ω × lag aligned the angle but not the acceleration, whose inertia terms
+/// (the boom's J·θ̈ and a held load riding up with the tip) then came 0.11 s
+/// late: +13 % on a 90 % load in a 0.5 s start ramp. So the force goes
+/// through a first-order lag of the sensor's lag too, and force, angle, rate
+/// and acceleration all stand for t − lag − d (0.11 s more delay on a
+/// lift-off). The rated load takes the angle advanced by ω × (sensor lag +
+/// d) (the present instant: lowering, the rated load falls, and it must not
+/// be read late). The same filter on force and angle keeps both delays equal
+/// whatever the cut-off.
 #[derive(Debug, Clone)]
 pub struct Limiter<T, M> {
     model: M,
     config: LimiterConfig<T>,
     monitor: PlausibilityMonitor<T>,
+    /// The angle sensor's lag, put on the force too (see "Time alignment").
+    force_lag: Option<LowPass<T>>,
     force_filter: LowPass<T>,
     angle_filter: LowPass<T>,
+    static_friction_share: T,
+    /// Time since the signal chain restarted (s), while under [`SETTLE_S`].
+    since_restart_s: Option<T>,
     previous_angle_deg: Option<T>,
     previous_rate_deg_s: Option<T>,
     moving_for_s: T,
-    swing: Option<SwingObserver<T>>,
+    bank: Option<StaticLoadBank<T>>,
+    /// Time the bank has not been advanced (s): the faulted cycles since
+    /// its last update.
+    bank_idle_s: T,
     direction: DirectionDetector<T>,
     machine: StateMachine<T>,
     log: EventLog<T, EVENT_LOG_LEN>,
@@ -108,12 +126,17 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         config.validate()?;
         Ok(Self {
             monitor: PlausibilityMonitor::new(config.plausibility),
+            force_lag: (config.angle_sensor_lag_s > T::lit(0.0))
+                .then(|| LowPass::new(T::lit(1.0) / (T::two_pi() * config.angle_sensor_lag_s), 1)),
             force_filter: LowPass::new(config.filter_hz, config.filter_stages),
+            static_friction_share: T::lit(1.0),
+            since_restart_s: None,
             angle_filter: LowPass::new(config.filter_hz, config.filter_stages),
             previous_angle_deg: None,
             previous_rate_deg_s: None,
             moving_for_s: T::lit(0.0),
-            swing: config.swing.map(SwingObserver::new),
+            bank: config.swing.map(StaticLoadBank::new),
+            bank_idle_s: T::lit(0.0),
             direction: DirectionDetector::new(config.direction),
             machine: StateMachine::new(config.thresholds),
             log: EventLog::new(),
@@ -241,13 +264,22 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
                     Ok(()) => {
                         let m = self.measure(p1, p2, angle, dt_s);
                         measurement = Some(m);
+                        // After a restart the filters start settled: for a
+                        // moving boom their start-up reads as an acceleration
+                        // the force never had. Not a reading until it passed.
+                        let settling = self.settling(&m, dt_s);
                         match self.assess(&m) {
                             Ok(e) => {
                                 estimate = Some(e);
                                 // A load no hook can give is no reading.
-                                self.negative_load
-                                    .implausible(e.load_kg, m.boom.angle_rad, dt_s)
-                                    .then_some(Fault::ImplausibleLoad)
+                                let negative = self
+                                    .negative_load
+                                    .implausible(e.load_kg, m.boom.angle_rad, dt_s);
+                                if negative {
+                                    Some(Fault::ImplausibleLoad)
+                                } else {
+                                    settling.then_some(Fault::Settling)
+                                }
                             }
                             Err(f) => {
                                 self.negative_load.reset();
@@ -258,6 +290,10 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
                 }
             }
         };
+
+        if measurement.is_none() {
+            self.bank_idle_s += dt_s;
+        }
 
         // Stage 5.
         let input = match (&fault, &estimate) {
@@ -300,8 +336,19 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         }
     }
 
+    /// `true` while the signal chain restarted less than [`SETTLE_S`] ago
+    /// and the boom moves (a still boom's start is its true history).
+    fn settling(&mut self, m: &Measurement<T>, dt_s: T) -> bool {
+        let Some(t) = self.since_restart_s else {
+            return false;
+        };
+        let t = t + dt_s;
+        self.since_restart_s = (t < T::lit(SETTLE_S)).then_some(t);
+        self.since_restart_s.is_some() && m.direction != Direction::Still
+    }
+
     /// Stages 3–4: load, rating, utilization, from one query of the model.
-    fn assess(&self, m: &Measurement<T>) -> Result<Estimate<T>, Fault> {
+    fn assess(&mut self, m: &Measurement<T>) -> Result<Estimate<T>, Fault> {
         let terms = self.model.cycle_terms(CycleQuery {
             force_angle_rad: m.boom.angle_rad,
             now: m.boom_now,
@@ -309,15 +356,33 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         let load_terms = terms
             .load
             .map_err(|e| Fault::Estimate(EstimateError::Model(e)))?;
-        let load_kg = estimate_load_kg(
+        let (at_rest, force_n) = load_equation(
             &load_terms,
             m.accel_rad_s2(),
             m.piston_force_n,
             &self.config.calibration,
             m.friction,
-            m.tan_swing,
+            m.static_friction_share,
         )
-        .map_err(Fault::Estimate)?
+        .map_err(Fault::Estimate)?;
+        // The static hook mass: the rope-hypothesis bank when the swing
+        // geometry is known, else the load hanging straight and still.
+        let static_load = match self.bank.as_mut() {
+            Some(bank) => Some(
+                bank.update(&BankTerms {
+                    at_rest,
+                    force_n,
+                    angle_rad: m.boom.angle_rad,
+                })
+                .ok_or(Fault::Estimate(EstimateError::NotObservable))?,
+            ),
+            None => None,
+        };
+        let load_kg = match static_load {
+            Some(s) => Some(s.load_kg),
+            None => at_rest.solve(force_n),
+        }
+        .ok_or(Fault::Estimate(EstimateError::NotObservable))?
             * self.config.load_reading_factor;
         let capacity_terms = terms
             .capacity
@@ -339,6 +404,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             tipping_load_kg: rating.tipping_load_kg,
             utilization,
             radius_m: rating.radius_m,
+            static_load,
         })
     }
 }

@@ -4,6 +4,7 @@ use crate::clock::Ticks;
 use crate::fault::Fault;
 use crate::io::{Measurement, OutputCommand};
 use crate::state_machine::LimiterState;
+use crate::static_load::StaticLoad;
 
 /// Load, capacity and utilization of one cycle.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -18,6 +19,9 @@ pub struct Estimate<T> {
     pub utilization: T,
     /// Hook radius (m).
     pub radius_m: T,
+    /// The rope-hypothesis bank's parts of the load, before the reading
+    /// factor ([`crate::static_load`]); `None` without the swing geometry.
+    pub static_load: Option<StaticLoad<T>>,
 }
 
 /// The result of one cycle.

@@ -59,15 +59,22 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     /// After a bad cycle the filters restart settled on the next good sample,
     /// so no faulty value ever reaches them.
     pub(super) fn restart_signal_chain(&mut self) {
+        self.since_restart_s = Some(T::lit(0.0));
         self.negative_load.reset();
         self.monitor.break_rate_history();
+        if let Some(l) = self.force_lag.as_mut() {
+            l.reset();
+        }
         self.force_filter.reset();
         self.angle_filter.reset();
         self.previous_angle_deg = None;
         self.previous_rate_deg_s = None;
         self.moving_for_s = T::lit(0.0);
-        if let Some(s) = self.swing.as_mut() {
-            s.reset();
+        // The load keeps swinging through a fault (a pressure out of range
+        // when a short rope swings inward at a steep boom): the swing
+        // observers run on over the gap, only the averages start afresh.
+        if let Some(b) = self.bank.as_mut() {
+            b.restart_averages();
         }
     }
 
@@ -81,6 +88,12 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     ) -> Measurement<T> {
         let cal = &self.config.calibration;
         let force = piston_force_n(p1, p2, cal.p1_offset_bar, cal.p2_offset_bar);
+        // The force through the angle sensor's lag too: force, angle, rate
+        // and acceleration then share one delay (see "Time alignment").
+        let force = match self.force_lag.as_mut() {
+            Some(l) => l.update(force, dt_s),
+            None => force,
+        };
         let force_f = self.force_filter.update(force, dt_s);
         let angle_f = self
             .angle_filter
@@ -107,9 +120,18 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         } else {
             T::lit(0.0)
         };
-        // Time alignment (see the type's doc): the filtered force stands for
-        // t − d (d: the filter delay), the filtered angle for t − d − lag.
-        let at_force = angle_f + rate_f * self.config.angle_sensor_lag_s;
+        // The seals release at standstill (see crate::load_estimate).
+        self.static_friction_share = if direction == Direction::Still {
+            let x = dt_s / self.config.seal_release_s;
+            // e^(−x) ≈ 1/(1 + x + x²/2 + x³/6): no libm exp in the cycle.
+            self.static_friction_share
+                / (T::lit(1.0) + x * (T::lit(1.0) + x * (T::lit(0.5) + x / T::lit(6.0))))
+        } else {
+            T::lit(1.0)
+        };
+        // Time alignment (see the type's doc): the filtered force and the
+        // filtered angle both stand for t − d − lag.
+        let at_force = angle_f;
         let (now, rate_now) = extrapolate(
             angle_f,
             rate_f,
@@ -121,8 +143,28 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             angle_rad: at_force * to_rad,
             rate_rad_s: rate_f * to_rad,
         };
-        let tan_swing = match self.swing.as_mut() {
-            Some(s) => s.update(boom.angle_rad, dt_s),
+        let settling = self.since_restart_s.is_some();
+        let tan_swing = match self.bank.as_mut() {
+            Some(b) => {
+                if settling {
+                    // The filters restarted at this reading: the swing is
+                    // carried over relative to the tip (no jump of the
+                    // filtered angle kicks it), the filters' start-up
+                    // acceleration is not the boom's, and no average
+                    // starts from a reading that is none yet.
+                    if self.since_restart_s == Some(T::lit(0.0)) {
+                        b.rebase(boom.angle_rad);
+                    }
+                    b.restart_averages();
+                }
+                let accel = if settling { T::lit(0.0) } else { accel_f * to_rad };
+                b.advance(
+                    boom.angle_rad,
+                    boom.rate_rad_s,
+                    accel,
+                    dt_s + core::mem::replace(&mut self.bank_idle_s, T::lit(0.0)),
+                )
+            }
             None => T::lit(0.0),
         };
         Measurement {
@@ -133,6 +175,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             moving_for_s: self.moving_for_s,
             direction,
             friction: self.direction.friction(),
+            static_friction_share: self.static_friction_share,
             boom,
             boom_now: BoomState {
                 angle_rad: now * to_rad,
