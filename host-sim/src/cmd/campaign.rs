@@ -361,7 +361,7 @@ mod limiter_adapter {
     use crane_model::loads::thesis_modes::thesis_load_model_f32;
     use moment_limiter::calibration::CalibrationLearner;
     use moment_limiter::cycle::{Limiter, LimiterConfig};
-use moment_limiter::io::Frame;
+    use moment_limiter::io::Frame;
     use moment_limiter::load_estimate::Calibration;
     use moment_limiter::clock::Ticks;
     use moment_limiter::state_machine::LimiterState;

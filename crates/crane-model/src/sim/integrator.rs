@@ -218,17 +218,17 @@ impl<T: Real, const M: usize> State<T, M> {
             f
         };
         let keep = self.newton_start == NewtonStart::Extrapolated;
-        // The matrix and its age in steps (0: made in this step).
-        let mut jacobian = match self.kept_jacobian.take() {
-            Some((j, kept_h, age)) if keep && kept_h == h && age < JACOBIAN_MAX_AGE => Some((j, age)),
-            _ => None,
-        };
+        // The matrix lives in `kept_jacobian` (age 0: made in this step), used in
+        // place: it is too large to move around every iteration.
+        if !matches!(self.kept_jacobian, Some((_, kept_h, age)) if keep && kept_h == h && age < JACOBIAN_MAX_AGE) {
+            self.kept_jacobian = None;
+        }
         let mut cfg = model.configure(rigid, &predict(&a_eta, a_sw));
         let mut previous_correction: Option<T> = None;
         for iteration in 1..=MAX_ITERATIONS {
-            if matches!(jacobian, Some((_, age)) if age > 0) && iteration > STALE_JACOBIAN_ITERATIONS {
+            if matches!(self.kept_jacobian, Some((_, _, age)) if age > 0) && iteration > STALE_JACOBIAN_ITERATIONS {
                 // The kept matrix has drifted (a lift-off, a jolt): make a new one.
-                jacobian = None;
+                self.kept_jacobian = None;
             }
             let free = predict(&a_eta, a_sw);
             // The equations at the trial state; their own solve is not needed here.
@@ -239,7 +239,7 @@ impl<T: Real, const M: usize> State<T, M> {
             // Residual of the equations at the trial accelerations.
             let r_eta = eq.mass.a * a_eta + eq.mass.b * a_sw - eq.force_eta;
             let r_sw = eq.mass.b.dot(&a_eta) + eq.mass.c * a_sw - eq.force_swing;
-            if jacobian.is_none() {
+            if self.kept_jacobian.is_none() {
                 let mut j = eq.mass;
                 for k in 0..M {
                     let w = model.modes.omega_rad_s[k];
@@ -250,10 +250,11 @@ impl<T: Real, const M: usize> State<T, M> {
                 let k_swing = -p.first_moment_kg_m * model.gravity_m_s2 * free.swing_rad.sin();
                 j.c += k_swing.max(T::zero()) * quarter_h2;
                 // Factored once per step (or kept over steps), reused by every iteration.
-                jacobian = Some((j.factor()?, 0));
+                let factor = j.factor()?;
+                self.kept_jacobian = Some((if keep { factor.with_inverse() } else { factor }, h, 0));
             }
-            let (d_eta, d_sw) = match &jacobian {
-                Some((jac, _)) => jac.solve(&r_eta, r_sw)?,
+            let (d_eta, d_sw) = match &self.kept_jacobian {
+                Some((jac, _, _)) => jac.solve(&r_eta, r_sw)?,
                 None => return Err(ModelError::Singular("Newmark iteration matrix")),
             };
             a_eta -= d_eta;
@@ -272,8 +273,8 @@ impl<T: Real, const M: usize> State<T, M> {
             // and Wanner's stopping rule for simplified Newton, Solving ODEs II
             // §IV.8). Once θ has been measured on this matrix, a first correction
             // that small ends the step: the second evaluation would only confirm it.
-            let error_left = match (iteration, self.contraction, &jacobian) {
-                (1, Some((theta, since)), Some((_, age)))
+            let error_left = match (iteration, self.contraction, &self.kept_jacobian) {
+                (1, Some((theta, since)), Some((_, _, age)))
                     if keep && *age > 0 && since < CONTRACTION_MAX_AGE && theta < T::lit(0.5) =>
                 {
                     theta / (T::one() - theta) * correction
@@ -299,10 +300,10 @@ impl<T: Real, const M: usize> State<T, M> {
                     *since += 1;
                 }
                 // A matrix that needed more than two iterations is not kept.
-                self.kept_jacobian = match jacobian {
-                    Some((j, age)) if keep && (age == 0 || iteration <= 2) => Some((j, h, age + 1)),
-                    _ => None,
-                };
+                match &mut self.kept_jacobian {
+                    Some((_, _, age)) if keep && (*age == 0 || iteration <= 2) => *age += 1,
+                    _ => self.kept_jacobian = None,
+                }
                 if let Some(ev) = sample {
                     ev.config = cfg;
                     ev.equations = eq;
