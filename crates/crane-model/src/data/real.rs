@@ -83,20 +83,21 @@ pub fn sin_cos_f32(x: f32) -> (f32, f32) {
     const PIO2_HI: f32 = 1.570_312_5;
     const PIO2_LO: f32 = 4.838_268e-4;
     let q = x * FRAC_2_PI;
-    // Round to nearest: `as` truncates toward zero and saturates (NaN → 0).
-    let k = if q >= 0.0 { (q + 0.5) as i32 } else { (q - 0.5) as i32 };
+    // Round to nearest: `as` truncates toward zero and saturates (NaN → 0). The
+    // half is given q's sign without a branch: the swing's angle changes sign
+    // every half period, and a mispredicted branch here cost more than the
+    // polynomials (the estimator calls this ~40 times a cycle).
+    let k = (q + 0.5f32.copysign(q)) as i32;
     let kf = k as f32;
     let r = (x - kf * PIO2_HI) - kf * PIO2_LO;
     let z = r * r;
     let s = r + r * z * (-1.666_665_5e-1 + z * (8.332_161e-3 + z * -1.951_529_6e-4));
     let c = 1.0 - 0.5 * z + z * z * (4.166_664_6e-2 + z * (-1.388_731_6e-3 + z * 2.443_315_7e-5));
     let (s, c) = if x.is_finite() { (s, c) } else { (f32::NAN, f32::NAN) };
-    match k & 3 {
-        0 => (s, c),
-        1 => (c, -s),
-        2 => (-s, -c),
-        _ => (-c, s),
-    }
+    // The quadrant's swap and signs as two selects (k & 3 = 1: (c, −s);
+    // 2: (−s, −c); 3: both, (−c, s)).
+    let (s, c) = if k & 1 == 0 { (s, c) } else { (c, -s) };
+    if k & 2 == 0 { (s, c) } else { (-s, -c) }
 }
 
 #[cfg(test)]
