@@ -74,6 +74,9 @@ pub enum StoreError {
     TooBig,
     /// A blob whose own CRC-32 or header does not match its bytes.
     BadBlob,
+    /// The write needs a flash erase, which the caller did not allow
+    /// ([`Store::append_event_without_erase`]).
+    NeedsErase,
 }
 
 impl core::fmt::Display for StoreError {
@@ -85,6 +88,7 @@ impl core::fmt::Display for StoreError {
             StoreError::TooBig => "blob too large",
             StoreError::BadBlob => "blob checksum mismatch",
             StoreError::Geometry => "flash layout does not fit the flash",
+            StoreError::NeedsErase => "the write needs a flash erase",
         })
     }
 }
@@ -99,6 +103,7 @@ impl StoreError {
             StoreError::TooBig => "too big",
             StoreError::BadBlob => "bad blob",
             StoreError::Geometry => "geometry",
+            StoreError::NeedsErase => "needs erase",
         }
     }
 }
@@ -111,6 +116,7 @@ impl From<JournalError> for StoreError {
             JournalError::TooBig => StoreError::TooBig,
             JournalError::Full => StoreError::Full,
             JournalError::Geometry => StoreError::Geometry,
+            JournalError::NeedsErase => StoreError::NeedsErase,
         }
     }
 }
@@ -241,6 +247,24 @@ impl<F: Flash> Store<F> {
         Ok(self
             .events
             .append(&mut self.flash, EVENT_KEY, &event.encode())?)
+    }
+
+    /// Appends an event only if no flash erase is needed (see
+    /// [`Journal::append_without_erase`]): what the board does while it runs.
+    pub fn append_event_without_erase(&mut self, event: &EventRecord) -> Result<(), StoreError> {
+        Ok(self
+            .events
+            .append_without_erase(&mut self.flash, EVENT_KEY, &event.encode())?)
+    }
+
+    /// Makes room for `records` events without any erase later (erasing and
+    /// compacting now if needed): the board calls it at start-up, before the
+    /// watchdog runs, so the events of the run that follows need no erase.
+    /// At most half the event bank can be reserved (compaction keeps the
+    /// newest half).
+    pub fn reserve_events(&mut self, records: u32) -> Result<(), StoreError> {
+        let bytes = records.saturating_mul(Journal::record_size(RECORD_LEN));
+        Ok(self.events.reserve(&mut self.flash, bytes)?)
     }
 
     /// Calls `each` with every stored event, oldest first; returns how many.
