@@ -247,11 +247,12 @@ pub enum StoreCalibrationError {
     Store(crate::store::StoreError),
 }
 
-/// Reads the stored calibration and decodes it: what the board applies, or
-/// why it refuses to grant motion.
+/// Reads the stored calibration and decodes it: what the board applies
+/// (with the blob's CRC-32, which identifies it in the event log), or why it
+/// refuses to grant motion.
 pub fn load_calibration<T: Real, F: crate::journal::Flash>(
     store: &mut crate::store::Store<F>,
-) -> Result<Calibration<T>, CalibrationBlobError> {
+) -> Result<(Calibration<T>, u32), CalibrationBlobError> {
     let mut buf = [0u8; BLOB_LEN];
     match store.read_blob(crate::store::Key::Calibration, &mut buf) {
         Ok(None) => Err(CalibrationBlobError::Missing),
@@ -262,6 +263,9 @@ pub fn load_calibration<T: Real, F: crate::journal::Flash>(
         Ok(Some(blob)) if blob.version != BLOB_FORMAT => {
             Err(CalibrationBlobError::Format(blob.version))
         }
-        Ok(Some(blob)) => decode_calibration(blob.bytes),
+        Ok(Some(blob)) => {
+            let cal = decode_calibration(blob.bytes)?;
+            Ok((cal, crc32(blob.bytes)))
+        }
     }
 }

@@ -68,11 +68,17 @@ pub fn record_of<T: Real>(event: &Event<T>, boot: u32, uptime_ms: u32) -> Option
     };
     let permille = event.utilization.map_or(0xFFFF, |u| {
         // Saturating: a utilization beyond 65.5 (or negative) is clamped.
-        let p = u.to_f64() * 1000.0;
-        if p.is_nan() {
-            0xFFFF
+        // In `T` (f32 on the board: no soft-float f64 multiply).
+        let p = u * T::lit(1000.0);
+        let (zero, top) = (T::lit(0.0), T::lit(65_534.0));
+        if p >= top {
+            65_534
+        } else if p > zero {
+            p.to_f64() as u32
+        } else if p <= zero {
+            0
         } else {
-            p.clamp(0.0, 65_534.0) as u32
+            0xFFFF // NaN: unknown
         }
     });
     Some(EventRecord {

@@ -197,11 +197,10 @@ fn the_board_loads_only_a_good_stored_blob() {
     );
     // Stored by the host tool's path.
     limiter_storage::calibration_blob::store_calibration(&mut store, &cal).unwrap();
-    assert_eq!(
-        load_calibration::<f64, _>(&mut store).unwrap(),
-        cal,
-        "read back through the store"
-    );
+    let (back, crc) = load_calibration::<f64, _>(&mut store).unwrap();
+    assert_eq!(back, cal, "read back through the store");
+    // The CRC the board logs with `CalibrationApplied` identifies the blob.
+    assert_eq!(crc, crc32(&encode_calibration(&cal).unwrap()));
     // A blob under another store version, a foreign blob, one out of bounds.
     let blob = encode_calibration(&cal).unwrap();
     store.write_blob(Key::Calibration, 7, &blob).unwrap();

@@ -215,23 +215,42 @@ pub fn run(syst: cortex_m::peripheral::SYST) -> u8 {
     let end = if args.json {
         // Pass 1 finds the summary that heads the object; pass 2 streams the
         // events (the replay is deterministic: the same events again).
-        let first = replay_pass(log_path, &config, calibrated, &mut counter, &mut cycles, |_| {});
+        let first = replay_pass(
+            log_path,
+            &config,
+            calibrated,
+            &mut counter,
+            &mut cycles,
+            |_| {},
+        );
         match first {
             Ok(first) => {
                 let mut json = JsonStream::head(&mut out, &first.summary, first.error.as_ref());
                 let mut ignored = budgets::CycleStats::default();
-                let second = replay_pass(log_path, &config, calibrated, &mut counter, &mut ignored, |e| {
-                    json.event(&mut out, &first.summary, e)
-                });
+                let second = replay_pass(
+                    log_path,
+                    &config,
+                    calibrated,
+                    &mut counter,
+                    &mut ignored,
+                    |e| json.event(&mut out, &first.summary, e),
+                );
                 json.tail(&mut out);
                 second.map(|_| first)
             }
             Err(e) => Err(e),
         }
     } else {
-        replay_pass(log_path, &config, calibrated, &mut counter, &mut cycles, |e| {
-            let _ = replay::write_event_line(&mut out, e);
-        })
+        replay_pass(
+            log_path,
+            &config,
+            calibrated,
+            &mut counter,
+            &mut cycles,
+            |e| {
+                let _ = replay::write_event_line(&mut out, e);
+            },
+        )
         .inspect(|end| {
             let _ = replay::write_summary_line(&mut out, &end.summary);
         })

@@ -166,8 +166,8 @@ mod tests {
             events: 0..0,
         };
         let mut store = Store::new(RamFlash(image), layout);
-        assert_eq!(load_calibration::<f64, _>(&mut store).unwrap(), cal);
+        assert_eq!(load_calibration::<f64, _>(&mut store).unwrap().0, cal);
         let cal32 = parse_calibration::<f32>(text.as_bytes()).unwrap();
-        assert_eq!(load_calibration::<f32, _>(&mut store).unwrap(), cal32);
+        assert_eq!(load_calibration::<f32, _>(&mut store).unwrap().0, cal32);
     }
 }
