@@ -149,6 +149,11 @@ impl<F: Flash> Store<F> {
         }
     }
 
+    /// The flash (tests inspect it while the store is in use).
+    pub fn flash(&self) -> &F {
+        &self.flash
+    }
+
     /// Gives the flash back (tests inspect it).
     pub fn into_flash(self) -> F {
         self.flash

@@ -268,3 +268,69 @@ fn limiter_events_become_state_change_records() {
     };
     assert_eq!(record_of(&s, BOOT, 0), None);
 }
+
+#[test]
+fn a_replayed_overload_persists_every_state_change_and_writes_only_in_cut_cycles() {
+    use moment_limiter::limiter::{Limiter, LimiterConfig};
+    use moment_limiter::log_format::LogParser;
+
+    // The board's loop with the shipped model, fed an example log that goes
+    // NORMAL -> WARNING -> OVERLOAD while the boom is lowered.
+    let mut limiter = Limiter::new(
+        crane_model::thesis_modes::thesis_load_model_f32(),
+        LimiterConfig::<f32>::standard(),
+    )
+    .unwrap();
+    let mut parser = LogParser::<f32>::new();
+    let mut store = Store::new(CutFlash::<4>::new(), layout());
+    store.reserve_events(40).unwrap();
+    let mut queue = EventQueue::<8>::new();
+    let mut logged = Vec::new();
+    let (mut granted_with_events_waiting, mut flushes) = (0, 0);
+    let text = include_str!("../../../examples/logs/overload_lowering.csv");
+    for (cycle, line) in text.lines().enumerate() {
+        let Some(record) = parser.feed_line(line).unwrap() else {
+            continue;
+        };
+        let report = limiter.step_frame(&record.frame);
+        let uptime_ms = 20 * cycle as u32;
+        while let Some(event) = limiter.events_mut().pop_oldest() {
+            if let Some(r) = record_of(&event, BOOT, uptime_ms) {
+                logged.push(r);
+                queue.push(r);
+            }
+        }
+        let steps = store.flash().steps_done;
+        let r = queue
+            .flush(&mut store, &report.command, 4, BOOT, uptime_ms)
+            .unwrap();
+        if motion_granted(&report.command) {
+            assert_eq!(r, Flushed::MotionGranted);
+            assert_eq!(
+                store.flash().steps_done,
+                steps,
+                "flash written in a granted cycle"
+            );
+            granted_with_events_waiting += usize::from(!queue.is_empty());
+        } else if r != Flushed::Written(0) {
+            flushes += 1;
+        }
+    }
+    let states: Vec<u8> = logged.iter().map(|r| r.detail).collect();
+    assert!(
+        states.contains(&state_code(LimiterState::Warning))
+            && states.last() == Some(&state_code(LimiterState::Overload)),
+        "the log did not go through WARNING into OVERLOAD: {states:?}"
+    );
+    assert!(
+        granted_with_events_waiting > 0,
+        "no event had to wait for a cut cycle"
+    );
+    assert!(flushes > 0);
+    assert!(queue.is_empty(), "the OVERLOAD cycles flushed everything");
+    assert_eq!(
+        stored(&store.into_flash()),
+        logged,
+        "every state change, in order"
+    );
+}
