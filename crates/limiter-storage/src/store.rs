@@ -8,10 +8,16 @@
 //!   value. The calibration and the configuration are opaque blobs with a
 //!   version (their schema belongs to whoever reads them): 8 header bytes
 //!   (version u16, length u16, CRC-32 of the bytes) followed by at most
-//!   [`BLOB_MAX`] bytes. The fault latch and the boot counter are small values
-//!   under their own keys. Compaction keeps the latest record of each key.
+//!   [`BLOB_MAX`] bytes (the calibration's bytes are the 60-byte blob of
+//!   [`crate::calibration_blob`], stored under version
+//!   [`crate::calibration_blob::BLOB_FORMAT`]). The fault latch and the boot
+//!   counter are small values under their own keys. Compaction keeps the
+//!   latest record of each key.
 //! - **events**: 16-byte [`EventRecord`]s; when a bank is full the newest half
-//!   is moved to the other bank and the oldest events are dropped.
+//!   is moved to the other bank and the oldest events are dropped. During
+//!   operation the board appends only without erasing
+//!   ([`Store::append_event_without_erase`], after [`Store::reserve_events`]
+//!   at start-up; see [`crate::event_queue`]).
 //!
 //! Every record carries a CRC-32 (key, length, data) checked on every read, and
 //! blobs carry their own CRC-32 too: a record that fails either is never
