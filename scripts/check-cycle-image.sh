@@ -9,12 +9,11 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 TARGET=thumbv7em-none-eabihf
-ELF=target/$TARGET/release/firmware
+ELF=target/$TARGET/release/firmware        # QEMU build (src/bin/qemu.rs)
 "$(dirname "$0")/install-test-deps.sh" >/dev/null
 
 cargo build -q --release --target $TARGET -p firmware --no-default-features --features board
-cp "$ELF" "$ELF-board-check"
-python3 scripts/check-cycle-image.py "$ELF-board-check" 5cycle | sed -n '1p;$p'
+python3 scripts/check-cycle-image.py "$ELF-board" 5cycle | sed -n '1p;$p'
 cargo build -q --release --target $TARGET -p firmware
 python3 scripts/check-cycle-image.py "$ELF" 10step_frame | sed -n '1p;$p'
 # Negative control: the log parser parses f64 (soft float on the M4F) and can

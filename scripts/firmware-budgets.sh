@@ -44,8 +44,9 @@ if [ -z "$log" ]; then
 fi
 log=$(realpath "$log")
 
+# The board binary (src/bin/board.rs) is `firmware-board`, the QEMU one `firmware`.
 cargo build -q --release --target $TARGET -p firmware --no-default-features --features board 2>/dev/null \
-    && cp "$ELF" "$BOARD_ELF" || rm -f "$BOARD_ELF"
+    || rm -f "$BOARD_ELF"
 cargo build -q --release --target $TARGET -p firmware
 
 size_of() { # ELF -> "flash ram"

@@ -168,7 +168,11 @@ fn self_test_passes_on_a_clean_stamped_image_and_replay_is_unchanged() {
         .unwrap_or_else(|| panic!("no self-test line; stderr:\n{}", r.stderr));
     assert!(line.contains("image=crc32:"), "{line}");
     assert!(line.contains(&format!("model={}/{}", 4, 4)), "{line}");
-    assert!(r.stdout.contains("final_state="), "the replay ran: {}", r.stdout);
+    assert!(
+        r.stdout.contains("final_state="),
+        "the replay ran: {}",
+        r.stdout
+    );
     assert_eq!(
         r.stdout, plain.stdout,
         "the stamped image replays like the plain one"
@@ -181,7 +185,11 @@ fn unstamped_qemu_image_runs_and_says_so() {
         return;
     }
     let r = qemu(firmware(), &[&smoke_log(), "--self-test"]);
-    assert!(r.stdout.contains("final_state="), "the replay ran: {}", r.stdout);
+    assert!(
+        r.stdout.contains("final_state="),
+        "the replay ran: {}",
+        r.stdout
+    );
     assert!(
         r.stderr.contains("self-test: passed") && r.stderr.contains("image=not-stamped"),
         "stderr:\n{}",

@@ -155,8 +155,18 @@ fn compare(label: &str, log: &Path, extra: &[&str]) -> String {
     // Without a calibration both say so on stderr, in the same words.
     let note = moment_limiter::tools::replay::UNCALIBRATED_NOTE;
     let calibrated = extra.iter().any(|a| a.starts_with("--calibration"));
-    assert_eq!(q.stderr.contains(note), !calibrated, "{label}: QEMU stderr: {}", q.stderr);
-    assert_eq!(h.stderr.contains(note), !calibrated, "{label}: host stderr: {}", h.stderr);
+    assert_eq!(
+        q.stderr.contains(note),
+        !calibrated,
+        "{label}: QEMU stderr: {}",
+        q.stderr
+    );
+    assert_eq!(
+        h.stderr.contains(note),
+        !calibrated,
+        "{label}: host stderr: {}",
+        h.stderr
+    );
     assert_eq!(qv["calibrated"], calibrated, "{label}");
     let identical = q.stdout == h.stdout && qj.stdout == hj.stdout;
     format!(
@@ -295,7 +305,11 @@ fn shifted_copy(log: &Path, shift_us: i64, out: &Path) {
             let (t, rest) = line.split_once(',').unwrap();
             let us = moment_limiter::tools::log_format::parse_time_us(t).unwrap() + shift_us;
             let (sign, a) = (if us < 0 { "-" } else { "" }, us.unsigned_abs());
-            dst.push_str(&format!("{sign}{}.{:06},{rest}", a / 1_000_000, a % 1_000_000));
+            dst.push_str(&format!(
+                "{sign}{}.{:06},{rest}",
+                a / 1_000_000,
+                a % 1_000_000
+            ));
         }
         dst.push('\n');
     }
@@ -309,7 +323,12 @@ fn events_without_time(text: &str) -> Vec<String> {
         .as_array()
         .unwrap()
         .iter()
-        .map(|e| format!("{} {} {} {} {}", e["sample"], e["state"], e["utilization"], e["load_kg"], e["fault"]))
+        .map(|e| {
+            format!(
+                "{} {} {} {} {}",
+                e["sample"], e["state"], e["utilization"], e["load_kg"], e["fault"]
+            )
+        })
         .collect()
 }
 
@@ -342,7 +361,10 @@ fn qemu_shifted_logs_give_identical_events() {
             let copy = dir.join(format!("{shift}_{name}"));
             shifted_copy(&log, shift, &copy);
             let (q, h) = (qemu(&copy, &extra), host(&copy, &extra));
-            let (qe, he) = (events_without_time(&q.stdout), events_without_time(&h.stdout));
+            let (qe, he) = (
+                events_without_time(&q.stdout),
+                events_without_time(&h.stdout),
+            );
             assert_eq!(qe, he, "{name} shifted by {label}: QEMU vs host");
             assert_eq!(q.code, h.code, "{name} shifted by {label}: exit codes");
             match &reference {
@@ -377,9 +399,20 @@ fn qemu_refuses_every_hostile_calibration_like_the_host() {
         let (q, h) = (qemu(&log, &[&arg]), host(&log, &[&arg]));
         assert_eq!(q.code, 1, "{name}: QEMU exit {}: {}", q.code, q.stderr);
         assert_eq!(h.code, 1, "{name}: host exit");
-        assert!(q.stderr.contains(expect), "{name}: QEMU said `{}`", q.stderr);
-        assert_eq!(q.stderr.trim(), h.stderr.trim(), "{name}: QEMU and host messages differ");
+        assert!(
+            q.stderr.contains(expect),
+            "{name}: QEMU said `{}`",
+            q.stderr
+        );
+        assert_eq!(
+            q.stderr.trim(),
+            h.stderr.trim(),
+            "{name}: QEMU and host messages differ"
+        );
         assert!(q.stdout.is_empty(), "{name}: the firmware replayed anyway");
     }
-    eprintln!("qemu_replay: {} hostile calibration files refused by QEMU and host alike", cases.len());
+    eprintln!(
+        "qemu_replay: {} hostile calibration files refused by QEMU and host alike",
+        cases.len()
+    );
 }

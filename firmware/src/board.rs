@@ -29,10 +29,19 @@
 //! 3. if the latch is active (a watchdog, fault, low-power or unknown reset,
 //!    now or before a power cycle): stay cut, alarm on, until the acknowledge
 //!    key is seen released and then held for 3 s (`latch::Acknowledge`);
-//! 4. the power-up self-test (`selftest` plus output readback and sensor
+//! 4. the stored calibration (`limiter_storage::calibration_blob`, written by
+//!    the host tool `calibration-image`): decoded, checked against the
+//!    calibration schema's bounds and applied; a missing, corrupt, foreign or
+//!    out-of-bounds blob is logged (`CalibrationRefused`) and keeps the
+//!    outputs cut until the next reset; then room for this run's events is
+//!    reserved in the event log (compacting it now if needed);
+//! 5. the power-up self-test (`selftest` plus output readback and sensor
 //!    plausibility here); a failure keeps the outputs cut until the next reset;
-//! 5. only then the watchdog starts (flash erases stall the CPU for up to 2 s,
-//!    so the store is used only before it) and the 100 Hz loop runs.
+//! 6. only then the watchdog starts and the 100 Hz loop runs. Flash erases
+//!    stall the CPU for up to 2 s, so only start-up erases; the loop queues
+//!    the limiter's state changes in RAM (`limiter_storage::event_queue`) and
+//!    writes at most [`FLUSH_PER_CYCLE`] of them, by programming only, in a
+//!    cycle whose outputs grant no motion.
 //!
 //! None of this runs under QEMU (it models neither the RCC/PLL nor the IWDG).
 //! The drivers are tested on the host with embedded-hal-mock
@@ -45,10 +54,12 @@ use crate::selftest::{self, Failure};
 use defmt_rtt as _; // defmt transport on the board: RTT, read by probe-rs.
 use embedded_hal_bus::spi::ExclusiveDevice;
 use limiter_drivers::{AlarmOutputs, ChannelMap, Mcp3208, Polarity};
+use limiter_storage::calibration_blob::load_calibration;
 use limiter_storage::event::{EventKind, EventRecord};
+use limiter_storage::event_queue::{record_of, EventQueue, Flushed};
 use limiter_storage::journal::JournalError;
 use limiter_storage::latch::{self, Acknowledge, FaultKind, LatchState, ResetCause};
-use limiter_storage::store::{Key, Layout, Store, BLOB_MAX};
+use limiter_storage::store::{Layout, Store};
 use moment_limiter::clock::{ClockConfig, Ticks};
 use moment_limiter::conversion::SensorConversion;
 use moment_limiter::io::{Channel, OutputCommand, Outputs, SensorInputs};
@@ -66,6 +77,16 @@ use stm32f4xx_hal::{
 
 /// Control period (µs): 100 Hz, the limiter clock's nominal period.
 const PERIOD_US: u32 = ClockConfig::standard().period_us;
+/// Events the RAM queue holds between flushes (16 bytes each, on the stack
+/// of `run`); when full it keeps the first half and the latest.
+const EVENT_QUEUE_LEN: usize = 32;
+/// Most events written in one cycle: a record is 24 bytes of flash, about
+/// 0.4 ms of byte programming (16 µs a byte), so 4 take ≈ 1.6 ms of the
+/// 10 ms period, in a cycle whose motions are cut anyway.
+const FLUSH_PER_CYCLE: usize = 4;
+/// Events of one run that can be persisted without an erase: start-up makes
+/// this much room (compacting the event log then if needed).
+const EVENT_RESERVE: u32 = 1024;
 /// GPIOC pins of the outputs (see the wiring table).
 const WARNING_PIN: u32 = 0;
 const ALARM_PIN: u32 = 1;
@@ -182,11 +203,13 @@ fn storage_layout() -> Layout {
 }
 
 /// The MCU's flash for the persisted store: stm32f4xx-hal's `NorFlash`
-/// programs and erases; reads are done here, bounds-checked, because the
-/// HAL's read slices the flash with a panicking index.
-struct BoardFlash<'a>(stm32f4xx_hal::flash::UnlockedFlash<'a>);
+/// programs and erases, the flash unlocked for each operation only (so it is
+/// locked whenever the store is not writing); reads are done here,
+/// bounds-checked, because the HAL's read slices the flash with a panicking
+/// index.
+struct BoardFlash(LockedFlash);
 
-impl limiter_storage::journal::Flash for BoardFlash<'_> {
+impl limiter_storage::journal::Flash for BoardFlash {
     fn read(&mut self, at: u32, buf: &mut [u8]) -> Result<(), JournalError> {
         const FLASH_BASE: usize = 0x0800_0000;
         const FLASH_LEN: usize = 1024 * 1024;
@@ -210,12 +233,13 @@ impl limiter_storage::journal::Flash for BoardFlash<'_> {
     }
 
     fn write(&mut self, at: u32, buf: &[u8]) -> Result<(), JournalError> {
-        embedded_storage::nor_flash::NorFlash::write(&mut self.0, at, buf)
+        // Locked again when `unlocked` is dropped, at the end of the call.
+        embedded_storage::nor_flash::NorFlash::write(&mut self.0.unlocked(), at, buf)
             .map_err(|_| JournalError::Flash)
     }
 
     fn erase(&mut self, from: u32, to: u32) -> Result<(), JournalError> {
-        embedded_storage::nor_flash::NorFlash::erase(&mut self.0, from, to)
+        embedded_storage::nor_flash::NorFlash::erase(&mut self.0.unlocked(), from, to)
             .map_err(|_| JournalError::Flash)
     }
 
@@ -230,10 +254,10 @@ impl limiter_storage::journal::Flash for BoardFlash<'_> {
     }
 }
 
-/// Appends an event; a failure is logged, not fatal (the outputs stay cut
-/// where the event mattered).
-fn log_event<F: limiter_storage::journal::Flash>(
-    store: &mut Store<F>,
+/// Appends an event (start-up only: it may erase); a failure is logged, not
+/// fatal (the outputs stay cut where the event mattered).
+fn log_event(
+    store: &mut Store<BoardFlash>,
     boot: u32,
     kind: EventKind,
     detail: u8,
@@ -321,7 +345,7 @@ pub fn run() -> ! {
     // unclocked after reset, then the pins float and the relays drop anyway).
     cut_outputs_now();
     let cause = read_reset_cause();
-    let (mut hw, mut locked_flash) = match init() {
+    let (mut hw, locked_flash) = match init() {
         Ok(parts) => parts,
         Err(e) => {
             defmt::error!("hardware init failed: {}", e);
@@ -335,10 +359,12 @@ pub fn run() -> ! {
     };
     defmt::warn!("reset cause: {}", cause.as_str());
 
-    let config = LimiterConfig::<f32>::standard();
+    let mut config = LimiterConfig::<f32>::standard();
+    // Kept for the whole run: the loop appends the queued events (programs
+    // only, never an erase) while no motion is granted.
+    let mut store = Store::new(BoardFlash(locked_flash), storage_layout());
+    let boot = store.next_boot().unwrap_or(0);
     {
-        let mut store = Store::new(BoardFlash(locked_flash.unlocked()), storage_layout());
-        let boot = store.next_boot().unwrap_or(0);
         log_event(&mut store, boot, EventKind::Boot, cause.code(), 0, 0);
         // An unreadable latch is a latched one: the limiter cannot vouch for it.
         let before = store.latch().unwrap_or_else(|e| {
@@ -383,13 +409,37 @@ pub fn run() -> ! {
             );
             defmt::warn!("fault acknowledged");
         }
-        // The calibration is an opaque versioned blob here; its schema reader
-        // applies it to `config` (not yet wired, see firmware/README.md).
-        let mut blob = [0u8; BLOB_MAX];
-        match store.read_blob(Key::Calibration, &mut blob) {
-            Ok(Some(b)) => defmt::info!("calibration v{}: {} bytes", b.version, b.bytes.len()),
-            Ok(None) => defmt::warn!("no calibration stored"),
-            Err(e) => defmt::error!("calibration unreadable: {=str}", e.as_str()),
+        // The stored calibration (`calibration-image` makes it from a
+        // validated CAL.json), checked against the schema's bounds. Without
+        // a good one the limiter cannot vouch for its load estimate: no
+        // motion is granted, and the reason is in the event log.
+        match load_calibration::<f32, _>(&mut store) {
+            Ok((calibration, crc)) => {
+                config.calibration = calibration;
+                log_event(&mut store, boot, EventKind::CalibrationApplied, 0, crc, 0);
+                defmt::info!("calibration applied (blob crc32 {=u32:08x})", crc);
+            }
+            Err(e) => {
+                log_event(
+                    &mut store,
+                    boot,
+                    EventKind::CalibrationRefused,
+                    e.code(),
+                    e.detail(),
+                    0,
+                );
+                defmt::error!(
+                    "calibration refused ({=str}, detail {=u32}): no motion granted",
+                    e.as_str(),
+                    e.detail()
+                );
+                stay_cut(&mut hw)
+            }
+        }
+        // Room for this run's events, so that no flush during operation
+        // ever needs an erase (made now, before the watchdog runs).
+        if let Err(e) = store.reserve_events(EVENT_RESERVE) {
+            defmt::error!("event log: {=str}", e.as_str());
         }
 
         // Power-up self-test, outputs cut.
@@ -417,11 +467,10 @@ pub fn run() -> ! {
                     failure.code(),
                     failure.detail()
                 );
-                drop(store);
                 stay_cut(&mut hw)
             }
         }
-    } // The flash is locked again here: nothing writes it while the loop runs.
+    }
 
     let mut limiter = match Limiter::new(crate::model::hook_load_model(), config) {
         Ok(limiter) => limiter,
@@ -440,6 +489,7 @@ pub fn run() -> ! {
 
     let mut cycle: u32 = 0;
     let mut previous = limiter.state();
+    let mut queue = EventQueue::<EVENT_QUEUE_LEN>::new();
     loop {
         let _ = nb::block!(hw.tick.wait());
         // Integer time (moment_limiter::clock): the cycle count in µs,
@@ -450,6 +500,30 @@ pub fn run() -> ! {
         if report.state != previous {
             defmt::warn!("cycle {} state {}", cycle, report.state.as_str());
             previous = report.state;
+        }
+        // The cycle's events into the RAM queue; to flash only in a cycle
+        // whose outputs grant no motion, a few records at a time, never an
+        // erase (`limiter_storage::event_queue`).
+        let uptime_ms = cycle.wrapping_mul(PERIOD_US / 1000);
+        while let Some(event) = limiter.events_mut().pop_oldest() {
+            if let Some(record) = record_of(&event, boot, uptime_ms) {
+                queue.push(record);
+            }
+        }
+        if !queue.is_empty() || queue.dropped() > 0 {
+            match queue.flush(
+                &mut store,
+                &report.command,
+                FLUSH_PER_CYCLE,
+                boot,
+                uptime_ms,
+            ) {
+                Ok(Flushed::NeedsErase(_)) => {
+                    defmt::warn!("event log full until the next start-up")
+                }
+                Ok(_) => {}
+                Err(e) => defmt::error!("event log: {=str}", e.as_str()),
+            }
         }
         // Overrun: the next tick already came while we were working.
         if hw.tick.wait().is_ok() {

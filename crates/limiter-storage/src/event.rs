@@ -1,6 +1,6 @@
 //! The event log's record: 16 bytes, fixed size, so the log is a plain queue
-//! and its worst-case size is known. `sequential-storage` adds a CRC-32 to
-//! every item it stores; a record that fails it is never returned.
+//! and its worst-case size is known. The journal adds a CRC-32 to every
+//! record it stores; a record that fails it is never returned.
 
 /// What happened.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -22,6 +22,22 @@ pub enum EventKind {
     CalibrationStored = 6,
     /// The persisted settings could not be read (corrupt or unreadable flash).
     StorageError = 7,
+    /// The stored calibration was decoded and applied; `value` its CRC-32.
+    CalibrationApplied = 8,
+    /// The stored calibration was refused, so no motion is granted;
+    /// `detail` the reason
+    /// ([`crate::calibration_blob::CalibrationBlobError::code`]: 1 missing,
+    /// 2 unreadable, 3 length, 4 magic, 5 CRC, 6 format, 7 schema version,
+    /// 8 out of bounds), `value` its detail (the key's index for 8).
+    CalibrationRefused = 9,
+    /// The limiter changed state during operation; `detail` the new state
+    /// (0 NORMAL, 1 WARNING, 2 OVERLOAD, 3 FAULT), `value` the fault class
+    /// in its low byte (see [`crate::event_queue::fault_code`]) and the
+    /// utilization in ‰ in its upper 16 bits (0xFFFF unknown).
+    StateChanged = 10,
+    /// Events recorded during operation but dropped because the RAM queue
+    /// was full (see [`crate::event_queue`]); `value` how many.
+    EventsDropped = 11,
 }
 
 impl EventKind {
@@ -35,6 +51,10 @@ impl EventKind {
             5 => EventKind::SelfTestFailed,
             6 => EventKind::CalibrationStored,
             7 => EventKind::StorageError,
+            8 => EventKind::CalibrationApplied,
+            9 => EventKind::CalibrationRefused,
+            10 => EventKind::StateChanged,
+            11 => EventKind::EventsDropped,
             _ => return None,
         })
     }

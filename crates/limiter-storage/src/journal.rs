@@ -81,6 +81,9 @@ pub enum JournalError {
     Full,
     /// The range or the flash geometry cannot hold two banks.
     Geometry,
+    /// The append needs an erase (a full or dirty bank, or no journal yet),
+    /// and the caller did not allow one ([`Journal::append_without_erase`]).
+    NeedsErase,
 }
 
 /// Which records compaction keeps.
@@ -513,6 +516,61 @@ impl Journal {
         key: u8,
         data: &[u8],
     ) -> Result<(), JournalError> {
+        self.append_with(flash, key, data, true)
+    }
+
+    /// Appends a record only if that needs no erase: only program
+    /// operations (tens of µs per word), never a sector erase (which stalls
+    /// the CPU for up to 2 s on the STM32F4). `Err(NeedsErase)`, with
+    /// nothing written, when the active bank is full, dirty or missing.
+    pub fn append_without_erase(
+        &mut self,
+        flash: &mut dyn Flash,
+        key: u8,
+        data: &[u8],
+    ) -> Result<(), JournalError> {
+        self.append_with(flash, key, data, false)
+    }
+
+    /// Makes sure `bytes` of records (headers and padding included) can be
+    /// appended without an erase: formats an empty or corrupt journal, and
+    /// compacts a dirty bank or one with less room. Erases only when needed.
+    pub fn reserve(&mut self, flash: &mut dyn Flash, bytes: u32) -> Result<(), JournalError> {
+        let bank_len = self.bank_len(flash)?;
+        let opened = self.open(flash)?;
+        self.state = None;
+        let mut active = match opened {
+            Opened::Active(a) => a,
+            Opened::Empty | Opened::Corrupt => {
+                self.erase_bank(flash, 0)?;
+                self.write_bank_header(flash, 0, 1)?;
+                Active {
+                    bank: 0,
+                    seq: 1,
+                    end: BANK_HEADER,
+                    dirty: false,
+                }
+            }
+        };
+        if active.dirty || active.end.saturating_add(bytes) > bank_len {
+            active = self.compact(flash, active)?;
+        }
+        self.state = Some(Opened::Active(active));
+        Ok(())
+    }
+
+    /// Bytes one record of `len` data bytes takes in a bank.
+    pub fn record_size(len: usize) -> u32 {
+        RECORD_HEADER + pad4(u32::try_from(len).unwrap_or(u32::MAX - 3))
+    }
+
+    fn append_with(
+        &mut self,
+        flash: &mut dyn Flash,
+        key: u8,
+        data: &[u8],
+        may_erase: bool,
+    ) -> Result<(), JournalError> {
         if usize::from(key) >= MAX_KEYS {
             return Err(JournalError::TooBig);
         }
@@ -524,6 +582,13 @@ impl Journal {
         }
         // Any failure below leaves the cached state unknown: re-read next time.
         let opened = self.open(flash)?;
+        let needs_erase = match opened {
+            Opened::Active(a) => a.dirty || a.end + need > bank_len,
+            Opened::Empty | Opened::Corrupt => true,
+        };
+        if needs_erase && !may_erase {
+            return Err(JournalError::NeedsErase);
+        }
         self.state = None;
         let mut active = match opened {
             Opened::Active(a) => a,

@@ -8,6 +8,10 @@
 //!   [`event::EventRecord`]s), on any `embedded-storage` [`NorFlash`], each in
 //!   a two-bank [`journal`] whose every update is power-cut safe (an
 //!   interrupted write or erase leaves the previous value readable);
+//! - [`calibration_blob`]: the calibration's fixed-size binary stored form,
+//!   checked against the calibration schema's own bounds on decoding;
+//! - [`event_queue`]: the RAM queue of events recorded during operation,
+//!   written to flash only while no motion is granted;
 //! - [`crc`]: CRC-32 (IEEE 802.3, the zlib one), used for blobs and the image;
 //! - [`image`]: the image checksum stamp written after linking
 //!   (`stamp-image`, a host tool in this crate) and its verification at power-up;
@@ -19,8 +23,10 @@
 //! [`NorFlash`]: embedded_storage::nor_flash::NorFlash
 #![cfg_attr(not(test), no_std)]
 
+pub mod calibration_blob;
 pub mod crc;
 pub mod event;
+pub mod event_queue;
 pub mod image;
 pub mod journal;
 pub mod latch;

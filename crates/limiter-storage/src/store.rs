@@ -8,10 +8,16 @@
 //!   value. The calibration and the configuration are opaque blobs with a
 //!   version (their schema belongs to whoever reads them): 8 header bytes
 //!   (version u16, length u16, CRC-32 of the bytes) followed by at most
-//!   [`BLOB_MAX`] bytes. The fault latch and the boot counter are small values
-//!   under their own keys. Compaction keeps the latest record of each key.
+//!   [`BLOB_MAX`] bytes (the calibration's bytes are the 60-byte blob of
+//!   [`crate::calibration_blob`], stored under version
+//!   [`crate::calibration_blob::BLOB_FORMAT`]). The fault latch and the boot
+//!   counter are small values under their own keys. Compaction keeps the
+//!   latest record of each key.
 //! - **events**: 16-byte [`EventRecord`]s; when a bank is full the newest half
-//!   is moved to the other bank and the oldest events are dropped.
+//!   is moved to the other bank and the oldest events are dropped. During
+//!   operation the board appends only without erasing
+//!   ([`Store::append_event_without_erase`], after [`Store::reserve_events`]
+//!   at start-up; see [`crate::event_queue`]).
 //!
 //! Every record carries a CRC-32 (key, length, data) checked on every read, and
 //! blobs carry their own CRC-32 too: a record that fails either is never
@@ -74,6 +80,9 @@ pub enum StoreError {
     TooBig,
     /// A blob whose own CRC-32 or header does not match its bytes.
     BadBlob,
+    /// The write needs a flash erase, which the caller did not allow
+    /// ([`Store::append_event_without_erase`]).
+    NeedsErase,
 }
 
 impl core::fmt::Display for StoreError {
@@ -85,6 +94,7 @@ impl core::fmt::Display for StoreError {
             StoreError::TooBig => "blob too large",
             StoreError::BadBlob => "blob checksum mismatch",
             StoreError::Geometry => "flash layout does not fit the flash",
+            StoreError::NeedsErase => "the write needs a flash erase",
         })
     }
 }
@@ -99,6 +109,7 @@ impl StoreError {
             StoreError::TooBig => "too big",
             StoreError::BadBlob => "bad blob",
             StoreError::Geometry => "geometry",
+            StoreError::NeedsErase => "needs erase",
         }
     }
 }
@@ -111,6 +122,7 @@ impl From<JournalError> for StoreError {
             JournalError::TooBig => StoreError::TooBig,
             JournalError::Full => StoreError::Full,
             JournalError::Geometry => StoreError::Geometry,
+            JournalError::NeedsErase => StoreError::NeedsErase,
         }
     }
 }
@@ -141,6 +153,11 @@ impl<F: Flash> Store<F> {
             settings: Journal::new(layout.settings, Keep::LatestPerKey),
             events: Journal::new(layout.events, Keep::NewestHalf),
         }
+    }
+
+    /// The flash (tests inspect it while the store is in use).
+    pub fn flash(&self) -> &F {
+        &self.flash
     }
 
     /// Gives the flash back (tests inspect it).
@@ -241,6 +258,24 @@ impl<F: Flash> Store<F> {
         Ok(self
             .events
             .append(&mut self.flash, EVENT_KEY, &event.encode())?)
+    }
+
+    /// Appends an event only if no flash erase is needed (see
+    /// [`Journal::append_without_erase`]): what the board does while it runs.
+    pub fn append_event_without_erase(&mut self, event: &EventRecord) -> Result<(), StoreError> {
+        Ok(self
+            .events
+            .append_without_erase(&mut self.flash, EVENT_KEY, &event.encode())?)
+    }
+
+    /// Makes room for `records` events without any erase later (erasing and
+    /// compacting now if needed): the board calls it at start-up, before the
+    /// watchdog runs, so the events of the run that follows need no erase.
+    /// At most half the event bank can be reserved (compaction keeps the
+    /// newest half).
+    pub fn reserve_events(&mut self, records: u32) -> Result<(), StoreError> {
+        let bytes = records.saturating_mul(Journal::record_size(RECORD_LEN));
+        Ok(self.events.reserve(&mut self.flash, bytes)?)
     }
 
     /// Calls `each` with every stored event, oldest first; returns how many.

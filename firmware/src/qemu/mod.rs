@@ -13,6 +13,12 @@
 //! as fast as QEMU can. No STM32 clock, SPI, GPIO or watchdog is initialised here
 //! (QEMU does not model the RCC/PLL; see `board` for that part).
 //!
+//! `--calibration-blob CAL.bin` (firmware only) takes the calibration in the
+//! board's stored form instead (`limiter_storage::calibration_blob`, made by
+//! `calibration-image --blob`), decoded and bounds-checked by the code the
+//! board runs at start-up: the same replay as with the JSON file it was made
+//! from, and a refused blob exits 1 like a refused file.
+//!
 //! `--budgets` (firmware only, not a crane-sim option) adds one line to stderr:
 //! peak stack (paint-stack), and SysTick counts per control cycle (instructions
 //! when QEMU runs with `-icount shift=0`).
@@ -37,11 +43,13 @@ const LINE_BUF: usize = 512;
 struct Args<'a> {
     log: Option<&'a str>,
     calibration: Option<&'a str>,
+    calibration_blob: Option<&'a str>,
     json: bool,
     budgets: bool,
 }
 
-const USAGE: &str = "usage: firmware LOG.csv [--calibration CAL.json] [--json] [--budgets]";
+const USAGE: &str =
+    "usage: firmware LOG.csv [--calibration CAL.json | --calibration-blob CAL.bin] [--json] [--budgets]";
 
 fn parse_args(cmdline: &str) -> Result<Args<'_>, &'static str> {
     let mut args = Args::default();
@@ -56,6 +64,9 @@ fn parse_args(cmdline: &str) -> Result<Args<'_>, &'static str> {
             "--calibration" => {
                 args.calibration = Some(words.next().ok_or("--calibration needs a file")?)
             }
+            "--calibration-blob" => {
+                args.calibration_blob = Some(words.next().ok_or("--calibration-blob needs a file")?)
+            }
             "--trace" => return Err("--trace is not supported by the firmware (use crane-sim)"),
             w if w.starts_with("--calibration=") => {
                 args.calibration = Some(&w["--calibration=".len()..])
@@ -67,6 +78,9 @@ fn parse_args(cmdline: &str) -> Result<Args<'_>, &'static str> {
     }
     if args.log.is_none() {
         return Err("missing LOG.csv");
+    }
+    if args.calibration.is_some() && args.calibration_blob.is_some() {
+        return Err("give one of --calibration and --calibration-blob");
     }
     Ok(args)
 }
@@ -183,7 +197,7 @@ pub fn run(syst: cortex_m::peripheral::SYST) -> u8 {
     let log_path = args.log.unwrap_or_default();
 
     let mut config = LimiterConfig::<f32>::standard();
-    let calibrated = args.calibration.is_some();
+    let calibrated = args.calibration.is_some() || args.calibration_blob.is_some();
     if let Some(path) = args.calibration {
         let mut buf = [0u8; 2048];
         let text = match HostFile::open(path).and_then(|mut f| f.read_to_end(&mut buf)) {
@@ -197,6 +211,26 @@ pub fn run(syst: cortex_m::peripheral::SYST) -> u8 {
             Ok(calibration) => config.calibration = calibration,
             Err(e) => {
                 let _ = writeln!(err, "error: calibration {path} refused: {e}");
+                return EXIT_INPUT;
+            }
+        }
+    } else if let Some(path) = args.calibration_blob {
+        let mut buf = [0u8; limiter_storage::calibration_blob::BLOB_LEN + 1];
+        let read = HostFile::open(path).and_then(|mut f| f.read_to_end(&mut buf).map(<[u8]>::len));
+        let bytes = match read {
+            Ok(n) => buf.get(..n).unwrap_or_default(),
+            // A file longer than the buffer is not a calibration blob: the
+            // decoder refuses it by its length.
+            Err(FileError::TooLarge) => &buf[..],
+            Err(e) => {
+                let _ = writeln!(err, "error: {path}: {e}");
+                return EXIT_INPUT;
+            }
+        };
+        match limiter_storage::calibration_blob::decode_calibration(bytes) {
+            Ok(calibration) => config.calibration = calibration,
+            Err(e) => {
+                let _ = writeln!(err, "error: calibration blob {path} refused: {e}");
                 return EXIT_INPUT;
             }
         }
@@ -215,23 +249,42 @@ pub fn run(syst: cortex_m::peripheral::SYST) -> u8 {
     let end = if args.json {
         // Pass 1 finds the summary that heads the object; pass 2 streams the
         // events (the replay is deterministic: the same events again).
-        let first = replay_pass(log_path, &config, calibrated, &mut counter, &mut cycles, |_| {});
+        let first = replay_pass(
+            log_path,
+            &config,
+            calibrated,
+            &mut counter,
+            &mut cycles,
+            |_| {},
+        );
         match first {
             Ok(first) => {
                 let mut json = JsonStream::head(&mut out, &first.summary, first.error.as_ref());
                 let mut ignored = budgets::CycleStats::default();
-                let second = replay_pass(log_path, &config, calibrated, &mut counter, &mut ignored, |e| {
-                    json.event(&mut out, &first.summary, e)
-                });
+                let second = replay_pass(
+                    log_path,
+                    &config,
+                    calibrated,
+                    &mut counter,
+                    &mut ignored,
+                    |e| json.event(&mut out, &first.summary, e),
+                );
                 json.tail(&mut out);
                 second.map(|_| first)
             }
             Err(e) => Err(e),
         }
     } else {
-        replay_pass(log_path, &config, calibrated, &mut counter, &mut cycles, |e| {
-            let _ = replay::write_event_line(&mut out, e);
-        })
+        replay_pass(
+            log_path,
+            &config,
+            calibrated,
+            &mut counter,
+            &mut cycles,
+            |e| {
+                let _ = replay::write_event_line(&mut out, e);
+            },
+        )
         .inspect(|end| {
             let _ = replay::write_summary_line(&mut out, &end.summary);
         })

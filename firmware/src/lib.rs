@@ -25,20 +25,18 @@
 //! (`board`); a power-up self-test (`selftest`) must pass before the limiter
 //! runs. No heap anywhere.
 //!
-//! On a host target (e.g. `cargo check --workspace`) the crate compiles to a stub
-//! `main` that says to build for `thumbv7em-none-eabihf`: the firmware is only
-//! meaningful on the MCU, and this keeps workspace-wide host commands working.
+//! The crate is this library and two thin binaries that hold only the entry
+//! point: `src/bin/qemu.rs` (binary `firmware`, feature `qemu`) and
+//! `src/bin/board.rs` (binary `firmware-board`, feature `board`).
+//!
+//! On a host target (e.g. `cargo check --workspace`) the library is empty and
+//! the binaries are stubs that say to build for `thumbv7em-none-eabihf`: the
+//! firmware is only meaningful on the MCU, and this keeps workspace-wide host
+//! commands working.
 #![cfg_attr(target_os = "none", no_std)]
-#![cfg_attr(target_os = "none", no_main)]
-// cortex-m-rt's `#[entry]` expands to an `#[export_name]` item, which the
-// unsafe_code lint flags; the attribute is required by the runtime.
+// cortex-m-rt's `#[exception]` expands to `#[export_name]` items, which the
+// unsafe_code lint flags; modules that need `unsafe` say why.
 #![allow(unsafe_code)]
-
-#[cfg(not(target_os = "none"))]
-fn main() {
-    eprintln!("the firmware runs on the MCU: build with --target thumbv7em-none-eabihf");
-    std::process::exit(1);
-}
 
 #[cfg(all(feature = "qemu", feature = "board"))]
 compile_error!(
@@ -49,8 +47,6 @@ compile_error!("choose one of the features `qemu` (default) and `board`");
 
 #[cfg(target_os = "none")]
 use cortex_m as _; // critical-section implementation for defmt
-#[cfg(target_os = "none")]
-use cortex_m_rt::entry;
 
 #[cfg(target_os = "none")]
 mod fault;
@@ -65,7 +61,7 @@ mod selftest;
 
 #[cfg(feature = "board")]
 #[cfg(target_os = "none")]
-mod board;
+pub mod board;
 #[cfg(feature = "qemu")]
 #[cfg(target_os = "none")]
 mod defmt_semihosting;
@@ -118,25 +114,4 @@ mod platform {
 
 #[cfg(feature = "qemu")]
 #[cfg(target_os = "none")]
-mod qemu_boot;
-
-#[cfg(feature = "qemu")]
-#[cfg(target_os = "none")]
-#[entry]
-fn main() -> ! {
-    // `take` only fails if called twice; `main` runs once.
-    let Some(mut core) = cortex_m::Peripherals::take() else {
-        qemu::semihosting::exit(qemu::EXIT_INPUT)
-    };
-    // Self-test first (outputs cut), then the firmware-only test switches.
-    qemu_boot::boot(&mut core.SYST);
-    let code = qemu::run(core.SYST);
-    qemu::semihosting::exit(code)
-}
-
-#[cfg(feature = "board")]
-#[cfg(target_os = "none")]
-#[entry]
-fn main() -> ! {
-    board::run()
-}
+pub mod qemu_boot;

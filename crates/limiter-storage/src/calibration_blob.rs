@@ -1,0 +1,271 @@
+//! The calibration's stored form on the board: a fixed-size binary blob the
+//! host makes from a validated `CAL.json` (`calibration-image`, a host tool
+//! of this crate) and the board decodes at start-up, instead of parsing JSON
+//! on the board (the JSON reader made the board image 71.5 KB, over its
+//! 64 KiB flash budget; this decoder is a few hundred bytes).
+//!
+//! ## Format, version [`BLOB_FORMAT`] (60 bytes, little-endian)
+//!
+//! | bytes | holds |
+//! |---|---|
+//! | 0–3 | magic `LMLC` |
+//! | 4–5 | blob format version, [`BLOB_FORMAT`] |
+//! | 6–7 | calibration schema version, [`CALIBRATION_VERSION`] |
+//! | 8–55 | the six values of [`CALIBRATION_KEYS`], in its order, each an `f64` |
+//! | 56–59 | CRC-32 ([`crate::crc`]) of bytes 0–55 |
+//!
+//! Values are stored as the `f64` the JSON reader read, so a blob decodes to
+//! exactly the calibration the JSON file gives, in `f64` on the host and, by
+//! the same `T::lit` conversion, in `f32` on the board.
+//!
+//! The decoder checks, in this order: the length, the magic, the CRC, the
+//! two versions, then every value against the **schema's own bound table**
+//! ([`check_calibration`], the check the JSON reader makes; no bound is
+//! written here). Any failure is a [`CalibrationBlobError`] whose
+//! [`CalibrationBlobError::code`] the board records in its event log; the
+//! board then grants no motion.
+
+use crate::crc::crc32;
+use crane_model::Real;
+use moment_limiter::config_file::{
+    check_calibration, CalibrationFileError, CALIBRATION_KEYS, CALIBRATION_VERSION,
+};
+use moment_limiter::load_estimate::Calibration;
+
+/// Magic at the start of a calibration blob.
+pub const BLOB_MAGIC: [u8; 4] = *b"LMLC";
+/// The blob format this decoder reads and the encoder writes.
+pub const BLOB_FORMAT: u16 = 1;
+/// Bytes of a calibration blob.
+pub const BLOB_LEN: usize = 8 + 8 * CALIBRATION_KEYS.len() + 4;
+const VALUES_AT: usize = 8;
+const CRC_AT: usize = BLOB_LEN - 4;
+
+/// Why a stored calibration blob was refused.
+#[derive(Debug, Clone, PartialEq)]
+pub enum CalibrationBlobError {
+    /// No calibration is stored at all.
+    Missing,
+    /// The store could not be read (flash error, corrupt journal, or the
+    /// store's own CRC-32 of the blob failed).
+    Unreadable,
+    /// Not [`BLOB_LEN`] bytes.
+    Length(usize),
+    /// The magic is not [`BLOB_MAGIC`].
+    Magic,
+    /// The CRC-32 does not match the bytes.
+    Crc,
+    /// A blob format this decoder does not know.
+    Format(u16),
+    /// A calibration schema version this firmware does not know.
+    SchemaVersion(u16),
+    /// A value outside the schema's bounds (or not finite).
+    OutOfBounds(CalibrationFileError),
+}
+
+impl CalibrationBlobError {
+    /// A one-byte code for the event log (`detail` of
+    /// [`crate::event::EventKind::CalibrationRefused`]).
+    pub fn code(&self) -> u8 {
+        match self {
+            CalibrationBlobError::Missing => 1,
+            CalibrationBlobError::Unreadable => 2,
+            CalibrationBlobError::Length(_) => 3,
+            CalibrationBlobError::Magic => 4,
+            CalibrationBlobError::Crc => 5,
+            CalibrationBlobError::Format(_) => 6,
+            CalibrationBlobError::SchemaVersion(_) => 7,
+            CalibrationBlobError::OutOfBounds(_) => 8,
+        }
+    }
+
+    /// A number that says more (the `value` of the event): the length, the
+    /// version found, or the index in [`CALIBRATION_KEYS`] of the key out of
+    /// bounds; 0 otherwise.
+    pub fn detail(&self) -> u32 {
+        match self {
+            CalibrationBlobError::Length(n) => u32::try_from(*n).unwrap_or(u32::MAX),
+            CalibrationBlobError::Format(v) | CalibrationBlobError::SchemaVersion(v) => {
+                u32::from(*v)
+            }
+            CalibrationBlobError::OutOfBounds(CalibrationFileError::OutOfBounds {
+                spec, ..
+            }) => CALIBRATION_KEYS
+                .iter()
+                .position(|s| s.key == spec.key)
+                .map_or(u32::MAX, |i| i as u32),
+            _ => 0,
+        }
+    }
+
+    /// A short reason (for logs without `core::fmt`).
+    pub fn as_str(&self) -> &'static str {
+        match self {
+            CalibrationBlobError::Missing => "no calibration stored",
+            CalibrationBlobError::Unreadable => "calibration unreadable",
+            CalibrationBlobError::Length(_) => "calibration blob of the wrong length",
+            CalibrationBlobError::Magic => "not a calibration blob",
+            CalibrationBlobError::Crc => "calibration blob CRC mismatch",
+            CalibrationBlobError::Format(_) => "unknown calibration blob format",
+            CalibrationBlobError::SchemaVersion(_) => "unknown calibration schema version",
+            CalibrationBlobError::OutOfBounds(_) => "calibration value out of bounds",
+        }
+    }
+}
+
+impl core::fmt::Display for CalibrationBlobError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            CalibrationBlobError::Length(n) => {
+                write!(f, "{} ({n} bytes, not {BLOB_LEN})", self.as_str())
+            }
+            CalibrationBlobError::Format(v) => {
+                write!(
+                    f,
+                    "{} {v} (this firmware reads {BLOB_FORMAT})",
+                    self.as_str()
+                )
+            }
+            CalibrationBlobError::SchemaVersion(v) => {
+                write!(
+                    f,
+                    "{} {v} (this firmware reads {CALIBRATION_VERSION})",
+                    self.as_str()
+                )
+            }
+            CalibrationBlobError::OutOfBounds(e) => write!(f, "{e}"),
+            _ => f.write_str(self.as_str()),
+        }
+    }
+}
+
+fn values(cal: &Calibration<f64>) -> [f64; 6] {
+    [
+        cal.friction_up_n,
+        cal.friction_down_n,
+        cal.force_offset_n,
+        cal.p1_offset_bar,
+        cal.p2_offset_bar,
+        cal.angle_offset_deg,
+    ]
+}
+
+/// The blob of a calibration, after checking it against the schema's
+/// bounds (a calibration the board would refuse is never encoded).
+pub fn encode_calibration(cal: &Calibration<f64>) -> Result<[u8; BLOB_LEN], CalibrationBlobError> {
+    check_calibration(cal).map_err(CalibrationBlobError::OutOfBounds)?;
+    let mut b = [0u8; BLOB_LEN];
+    crate::put(&mut b, 0, &BLOB_MAGIC);
+    crate::put(&mut b, 4, &BLOB_FORMAT.to_le_bytes());
+    // The schema version is 1: it fits 16 bits with room to spare.
+    crate::put(&mut b, 6, &(CALIBRATION_VERSION as u16).to_le_bytes());
+    for (i, v) in values(cal).iter().enumerate() {
+        crate::put(&mut b, VALUES_AT + 8 * i, &v.to_le_bytes());
+    }
+    let crc = crc32(b.get(..CRC_AT).unwrap_or_default());
+    crate::put(&mut b, CRC_AT, &crc.to_le_bytes());
+    Ok(b)
+}
+
+fn u16_at(b: &[u8; BLOB_LEN], at: usize) -> u16 {
+    let mut w = [0u8; 2];
+    for (d, s) in w.iter_mut().zip(b.iter().skip(at)) {
+        *d = *s;
+    }
+    u16::from_le_bytes(w)
+}
+
+/// Decodes and checks a blob (see the module doc for the order of the
+/// checks), and converts the values to `T` as the JSON reader does.
+pub fn decode_calibration<T: Real>(bytes: &[u8]) -> Result<Calibration<T>, CalibrationBlobError> {
+    let b: &[u8; BLOB_LEN] = bytes
+        .try_into()
+        .map_err(|_| CalibrationBlobError::Length(bytes.len()))?;
+    if b.get(..4) != Some(&BLOB_MAGIC[..]) {
+        return Err(CalibrationBlobError::Magic);
+    }
+    let (body, crc) = b.split_at(CRC_AT);
+    let mut stored = [0u8; 4];
+    crate::put(&mut stored, 0, crc);
+    if crc32(body) != u32::from_le_bytes(stored) {
+        return Err(CalibrationBlobError::Crc);
+    }
+    let format = u16_at(b, 4);
+    if format != BLOB_FORMAT {
+        return Err(CalibrationBlobError::Format(format));
+    }
+    let schema = u16_at(b, 6);
+    if u32::from(schema) != CALIBRATION_VERSION {
+        return Err(CalibrationBlobError::SchemaVersion(schema));
+    }
+    let mut v = [0.0f64; 6];
+    for (i, out) in v.iter_mut().enumerate() {
+        let mut w = [0u8; 8];
+        for (d, s) in w.iter_mut().zip(b.iter().skip(VALUES_AT + 8 * i)) {
+            *d = *s;
+        }
+        *out = f64::from_le_bytes(w);
+    }
+    let [fu, fd, fo, p1, p2, a] = v;
+    let cal = Calibration {
+        friction_up_n: fu,
+        friction_down_n: fd,
+        force_offset_n: fo,
+        p1_offset_bar: p1,
+        p2_offset_bar: p2,
+        angle_offset_deg: a,
+    };
+    check_calibration(&cal).map_err(CalibrationBlobError::OutOfBounds)?;
+    Ok(Calibration {
+        friction_up_n: T::lit(fu),
+        friction_down_n: T::lit(fd),
+        force_offset_n: T::lit(fo),
+        p1_offset_bar: T::lit(p1),
+        p2_offset_bar: T::lit(p2),
+        angle_offset_deg: T::lit(a),
+    })
+}
+
+/// Stores a calibration blob under [`crate::store::Key::Calibration`] with
+/// the store version [`BLOB_FORMAT`] (checked again on reading).
+pub fn store_calibration<F: crate::journal::Flash>(
+    store: &mut crate::store::Store<F>,
+    cal: &Calibration<f64>,
+) -> Result<(), StoreCalibrationError> {
+    let blob = encode_calibration(cal).map_err(StoreCalibrationError::Refused)?;
+    store
+        .write_blob(crate::store::Key::Calibration, BLOB_FORMAT, &blob)
+        .map_err(StoreCalibrationError::Store)
+}
+
+/// Why [`store_calibration`] did not store.
+#[derive(Debug, Clone, PartialEq)]
+pub enum StoreCalibrationError {
+    /// The calibration is out of the schema's bounds.
+    Refused(CalibrationBlobError),
+    /// The store failed.
+    Store(crate::store::StoreError),
+}
+
+/// Reads the stored calibration and decodes it: what the board applies
+/// (with the blob's CRC-32, which identifies it in the event log), or why it
+/// refuses to grant motion.
+pub fn load_calibration<T: Real, F: crate::journal::Flash>(
+    store: &mut crate::store::Store<F>,
+) -> Result<(Calibration<T>, u32), CalibrationBlobError> {
+    let mut buf = [0u8; BLOB_LEN];
+    match store.read_blob(crate::store::Key::Calibration, &mut buf) {
+        Ok(None) => Err(CalibrationBlobError::Missing),
+        // A stored blob longer than a calibration does not fit `buf`.
+        Err(crate::store::StoreError::TooBig) => Err(CalibrationBlobError::Length(BLOB_LEN + 1)),
+        Err(crate::store::StoreError::BadBlob) => Err(CalibrationBlobError::Crc),
+        Err(_) => Err(CalibrationBlobError::Unreadable),
+        Ok(Some(blob)) if blob.version != BLOB_FORMAT => {
+            Err(CalibrationBlobError::Format(blob.version))
+        }
+        Ok(Some(blob)) => {
+            let cal = decode_calibration(blob.bytes)?;
+            Ok((cal, crc32(blob.bytes)))
+        }
+    }
+}

@@ -1,0 +1,244 @@
+//! The calibration's stored form (`calibration_blob`): JSON → blob → the same
+//! calibration; every bound of the schema enforced by the blob decoder too,
+//! with the JSON reader's verdict; corrupt, truncated and foreign blobs
+//! refused, also through the store the board reads them from.
+
+mod common;
+
+use common::{layout, CutFlash};
+use limiter_storage::calibration_blob::{
+    decode_calibration, encode_calibration, load_calibration, CalibrationBlobError, BLOB_FORMAT,
+    BLOB_LEN, BLOB_MAGIC,
+};
+use limiter_storage::crc::crc32;
+use limiter_storage::store::{Key, Store};
+use moment_limiter::config_file::{
+    hostile, parse_calibration, CalibrationFileError, CALIBRATION_KEYS, CALIBRATION_VERSION,
+};
+use moment_limiter::load_estimate::Calibration;
+
+/// A blob with any values and versions and a correct CRC: what a buggy or
+/// hostile writer could store (the encoder itself refuses bad values).
+fn raw_blob(values: [f64; 6], format: u16, schema: u16) -> Vec<u8> {
+    let mut b = Vec::with_capacity(BLOB_LEN);
+    b.extend_from_slice(&BLOB_MAGIC);
+    b.extend_from_slice(&format.to_le_bytes());
+    b.extend_from_slice(&schema.to_le_bytes());
+    for v in values {
+        b.extend_from_slice(&v.to_le_bytes());
+    }
+    let crc = crc32(&b);
+    b.extend_from_slice(&crc.to_le_bytes());
+    b
+}
+
+fn values(c: &Calibration<f64>) -> [f64; 6] {
+    [
+        c.friction_up_n,
+        c.friction_down_n,
+        c.force_offset_n,
+        c.p1_offset_bar,
+        c.p2_offset_bar,
+        c.angle_offset_deg,
+    ]
+}
+
+fn good() -> Calibration<f64> {
+    parse_calibration(hostile::GOOD.as_bytes()).unwrap()
+}
+
+#[test]
+fn json_to_blob_to_the_same_calibration_in_f64_and_f32() {
+    for text in [
+        hostile::GOOD,
+        include_str!("../../../examples/logs/cal.json"),
+    ] {
+        let cal = parse_calibration::<f64>(text.as_bytes()).unwrap();
+        let blob = encode_calibration(&cal).unwrap();
+        assert_eq!(blob.len(), BLOB_LEN);
+        assert_eq!(BLOB_LEN, 60);
+        assert_eq!(decode_calibration::<f64>(&blob).unwrap(), cal);
+        // The board's f32 calibration is the one the JSON reader gives in f32.
+        assert_eq!(
+            decode_calibration::<f32>(&blob).unwrap(),
+            parse_calibration::<f32>(text.as_bytes()).unwrap()
+        );
+        // And the raw writer agrees with the encoder byte for byte.
+        let raw = raw_blob(values(&cal), BLOB_FORMAT, CALIBRATION_VERSION as u16);
+        assert_eq!(raw, blob.to_vec());
+    }
+}
+
+#[test]
+fn every_bound_of_the_schema_is_enforced_by_the_blob_decoder_as_by_the_json_reader() {
+    let base = values(&good());
+    let mut checked = 0;
+    for (k, spec) in CALIBRATION_KEYS.iter().enumerate() {
+        let candidates = [
+            (spec.min, true),
+            (spec.max, true),
+            ((spec.min + spec.max) / 2.0, true),
+            (spec.max.next_up(), false),
+            (spec.min.next_down(), false),
+            (spec.max + 1.0, false),
+            (spec.min - 1.0, false),
+            (f64::NAN, false),
+            (f64::INFINITY, false),
+            (f64::NEG_INFINITY, false),
+        ];
+        for (v, ok) in candidates {
+            let mut vals = base;
+            vals[k] = v;
+            let blob = raw_blob(vals, BLOB_FORMAT, CALIBRATION_VERSION as u16);
+            let got = decode_calibration::<f32>(&blob);
+            assert_eq!(got.is_ok(), ok, "{} = {v}: {got:?}", spec.key);
+            if let Err(e) = &got {
+                match e {
+                    CalibrationBlobError::OutOfBounds(CalibrationFileError::OutOfBounds {
+                        spec: s,
+                        ..
+                    }) => assert_eq!(s.key, spec.key),
+                    other => panic!(
+                        "{} = {v}: refused for the wrong reason: {other:?}",
+                        spec.key
+                    ),
+                }
+                assert_eq!(e.code(), 8);
+                assert_eq!(e.detail(), k as u32, "the event names the key's index");
+                assert!(e.to_string().contains(&format!("`{}`", spec.key)), "{e}");
+                // The encoder refuses to write it in the first place.
+                let mut cal = good();
+                let mut cv = values(&cal);
+                cv[k] = v;
+                cal = Calibration {
+                    friction_up_n: cv[0],
+                    friction_down_n: cv[1],
+                    force_offset_n: cv[2],
+                    p1_offset_bar: cv[3],
+                    p2_offset_bar: cv[4],
+                    angle_offset_deg: cv[5],
+                };
+                assert!(
+                    encode_calibration(&cal).is_err(),
+                    "{} = {v} encoded",
+                    spec.key
+                );
+            }
+            // The same verdict as the JSON reader, where JSON can spell the value.
+            if v.is_finite() {
+                let text = hostile::with(spec.key, Some(&format!("{v:?}")));
+                assert_eq!(
+                    parse_calibration::<f32>(text.as_bytes()).is_ok(),
+                    ok,
+                    "JSON and blob disagree on {} = {v}",
+                    spec.key
+                );
+            }
+            checked += 1;
+        }
+    }
+    assert_eq!(checked, 10 * CALIBRATION_KEYS.len());
+}
+
+#[test]
+fn corrupt_truncated_and_foreign_blobs_are_refused() {
+    let blob = encode_calibration(&good()).unwrap();
+    // Every single bit flip anywhere.
+    for byte in 0..BLOB_LEN {
+        for bit in 0..8 {
+            let mut bad = blob;
+            bad[byte] ^= 1 << bit;
+            let e = decode_calibration::<f32>(&bad).expect_err("a flipped bit decoded");
+            assert!(
+                matches!(e, CalibrationBlobError::Crc | CalibrationBlobError::Magic),
+                "byte {byte} bit {bit}: {e:?}"
+            );
+        }
+    }
+    // Wrong lengths.
+    for n in [0, 4, BLOB_LEN - 1] {
+        assert_eq!(
+            decode_calibration::<f32>(&blob[..n]),
+            Err(CalibrationBlobError::Length(n))
+        );
+    }
+    let mut long = blob.to_vec();
+    long.push(0);
+    assert_eq!(
+        decode_calibration::<f32>(&long),
+        Err(CalibrationBlobError::Length(BLOB_LEN + 1))
+    );
+    // Erased flash, and a blob of something else.
+    assert_eq!(
+        decode_calibration::<f32>(&[0xFF; BLOB_LEN]),
+        Err(CalibrationBlobError::Magic)
+    );
+    // Versions this firmware does not know, with a correct CRC.
+    let v = values(&good());
+    assert_eq!(
+        decode_calibration::<f32>(&raw_blob(v, BLOB_FORMAT + 1, CALIBRATION_VERSION as u16)),
+        Err(CalibrationBlobError::Format(BLOB_FORMAT + 1))
+    );
+    for schema in [0, CALIBRATION_VERSION as u16 + 1] {
+        let e = decode_calibration::<f32>(&raw_blob(v, BLOB_FORMAT, schema)).unwrap_err();
+        assert_eq!(e, CalibrationBlobError::SchemaVersion(schema));
+        assert_eq!((e.code(), e.detail()), (7, u32::from(schema)));
+    }
+}
+
+#[test]
+fn the_board_loads_only_a_good_stored_blob() {
+    let cal = good();
+    // Nothing stored.
+    let mut store = Store::new(CutFlash::<4>::new(), layout());
+    assert_eq!(
+        load_calibration::<f32, _>(&mut store),
+        Err(CalibrationBlobError::Missing)
+    );
+    // Stored by the host tool's path.
+    limiter_storage::calibration_blob::store_calibration(&mut store, &cal).unwrap();
+    let (back, crc) = load_calibration::<f64, _>(&mut store).unwrap();
+    assert_eq!(back, cal, "read back through the store");
+    // The CRC the board logs with `CalibrationApplied` identifies the blob.
+    assert_eq!(crc, crc32(&encode_calibration(&cal).unwrap()));
+    // A blob under another store version, a foreign blob, one out of bounds.
+    let blob = encode_calibration(&cal).unwrap();
+    store.write_blob(Key::Calibration, 7, &blob).unwrap();
+    assert_eq!(
+        load_calibration::<f32, _>(&mut store),
+        Err(CalibrationBlobError::Format(7))
+    );
+    store
+        .write_blob(Key::Calibration, BLOB_FORMAT, b"{\"version\": 1}")
+        .unwrap();
+    assert_eq!(
+        load_calibration::<f32, _>(&mut store),
+        Err(CalibrationBlobError::Length(14))
+    );
+    let mut v = values(&cal);
+    v[3] = 50.0; // p1_offset_bar = 50 bar: the case
+    store
+        .write_blob(
+            Key::Calibration,
+            BLOB_FORMAT,
+            &raw_blob(v, BLOB_FORMAT, CALIBRATION_VERSION as u16),
+        )
+        .unwrap();
+    let e = load_calibration::<f32, _>(&mut store).unwrap_err();
+    assert!(
+        e.to_string().contains("`p1_offset_bar` = 50 is outside"),
+        "{e}"
+    );
+    // Bit rot in the stored record: the store's CRC refuses it, the previous
+    // record of the key is not resurrected as a calibration either.
+    let mut flash = store.into_flash();
+    let at = flash
+        .mem
+        .windows(4)
+        .rposition(|w| w == BLOB_MAGIC)
+        .expect("blob in flash");
+    flash.mem[at + 20] ^= 0x10;
+    let mut store = Store::new(flash.reboot(None), layout());
+    let got = load_calibration::<f32, _>(&mut store);
+    assert!(got.is_err(), "a rotten blob was applied: {got:?}");
+}
