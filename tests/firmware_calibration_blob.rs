@@ -153,7 +153,7 @@ fn refused_calibration_files_and_blobs_exit_1_naming_the_reason() {
     let bad_json = d.join("bad.json");
     std::fs::write(
         &bad_json,
-        moment_limiter::config_file::hostile::with("p1_offset_bar", Some("50")),
+        moment_limiter::tools::config_file::hostile::with("p1_offset_bar", Some("50")),
     )
     .unwrap();
     let out = make_blob(&bad_json, &d.join("never.bin"));

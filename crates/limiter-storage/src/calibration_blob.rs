@@ -27,7 +27,7 @@
 
 use crate::crc::crc32;
 use crane_model::Real;
-use moment_limiter::config_file::{
+use moment_limiter::tools::config_file::{
     check_calibration, CalibrationFileError, CALIBRATION_KEYS, CALIBRATION_VERSION,
 };
 use moment_limiter::load_estimate::Calibration;

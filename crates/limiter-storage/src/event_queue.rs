@@ -26,7 +26,7 @@ use crate::store::{Store, StoreError};
 use crane_model::Real;
 use moment_limiter::event_log::{self, Event};
 use moment_limiter::io::OutputCommand;
-use moment_limiter::limiter::Fault;
+use moment_limiter::fault::Fault;
 use moment_limiter::state_machine::LimiterState;
 
 /// `true` when `command` grants a moment-increasing motion (a permit relay
@@ -47,7 +47,7 @@ pub fn state_code(state: LimiterState) -> u8 {
 
 /// The fault's class in [`EventKind::StateChanged`] records: 0 none,
 /// 1 sensor, 2 load estimate, 3 capacity, 4 clock, 5 implausible load,
-/// 6 outputs.
+/// 6 outputs, 7 signal chain settling after a fault.
 pub fn fault_code(fault: Option<Fault>) -> u8 {
     match fault {
         None => 0,
@@ -57,6 +57,7 @@ pub fn fault_code(fault: Option<Fault>) -> u8 {
         Some(Fault::Clock(_)) => 4,
         Some(Fault::ImplausibleLoad) => 5,
         Some(Fault::Output) => 6,
+        Some(Fault::Settling) => 7,
     }
 }
 

@@ -12,7 +12,7 @@ use limiter_storage::calibration_blob::{
 };
 use limiter_storage::crc::crc32;
 use limiter_storage::store::{Key, Store};
-use moment_limiter::config_file::{
+use moment_limiter::tools::config_file::{
     hostile, parse_calibration, CalibrationFileError, CALIBRATION_KEYS, CALIBRATION_VERSION,
 };
 use moment_limiter::load_estimate::Calibration;

@@ -14,7 +14,7 @@ use limiter_storage::store::Store;
 use moment_limiter::clock::Ticks;
 use moment_limiter::event_log::{self, Event};
 use moment_limiter::io::OutputCommand;
-use moment_limiter::limiter::Fault;
+use moment_limiter::fault::Fault;
 use moment_limiter::state_machine::LimiterState;
 
 const BOOT: u32 = 3;
@@ -271,13 +271,13 @@ fn limiter_events_become_state_change_records() {
 
 #[test]
 fn a_replayed_overload_persists_every_state_change_and_writes_only_in_cut_cycles() {
-    use moment_limiter::limiter::{Limiter, LimiterConfig};
-    use moment_limiter::log_format::LogParser;
+    use moment_limiter::cycle::{Limiter, LimiterConfig};
+    use moment_limiter::tools::log_format::LogParser;
 
     // The board's loop with the shipped model, fed an example log that goes
     // NORMAL -> WARNING -> OVERLOAD while the boom is lowered.
     let mut limiter = Limiter::new(
-        crane_model::thesis_modes::thesis_load_model_f32(),
+        crane_model::loads::thesis_modes::thesis_load_model_f32(),
         LimiterConfig::<f32>::standard(),
     )
     .unwrap();

@@ -11,7 +11,7 @@
 //! F − F_0(θ) − J(θ)·θ̈ − friction = F_W(θ, W)·(1 + h·a_Ly/g + tan θ·tan φ),
 //!
 //! where F_0 + F_W(θ, W) is the model's piston force at rest (quadratic in W,
-//! [`crane_model::load_model::Quadratic`]) and J·θ̈ the boom's own inertia
+//! [`crane_model::loads::load_model::Quadratic`]) and J·θ̈ the boom's own inertia
 //! ([`crate::load_estimate`]). Two things the limiter cannot measure decide
 //! the factor:
 //!

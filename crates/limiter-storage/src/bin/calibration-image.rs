@@ -2,7 +2,7 @@
 //! its calibration from, out of a calibration file.
 //!
 //! The file is read with the one calibration reader
-//! (`moment_limiter::config_file`: schema version 1, every key required and
+//! (`moment_limiter::tools::config_file`: schema version 1, every key required and
 //! bounded); a refused file exits 1 with the reader's message, which names
 //! the key. Then:
 //!
@@ -23,7 +23,7 @@ use embedded_storage::nor_flash::{
 };
 use limiter_storage::calibration_blob::{encode_calibration, store_calibration, BLOB_LEN};
 use limiter_storage::store::{Layout, Store};
-use moment_limiter::config_file::parse_calibration;
+use moment_limiter::tools::config_file::parse_calibration;
 use std::process::ExitCode;
 
 /// Address of the settings range on the STM32F405 (`_settings_flash_start`).
