@@ -37,6 +37,10 @@ pub struct HeldPendulum<T> {
     gravity_m_s2: T,
     /// (φ, φ̇); `None` before the first update.
     state: Option<(T, T)>,
+    /// (sin φ, cos φ) of `state`'s φ, kept because the next update's first
+    /// sub-step and [`Self::tan_swing`] need them again (a bank of ten ropes
+    /// calls this 100 times a second: the trigonometry is its main cost).
+    trig: (T, T),
     factor: T,
 }
 
@@ -49,6 +53,7 @@ impl<T: Real> HeldPendulum<T> {
             boom_length_m,
             gravity_m_s2,
             state: None,
+            trig: (T::lit(0.0), T::lit(1.0)),
             factor: T::lit(1.0),
         }
     }
@@ -61,16 +66,14 @@ impl<T: Real> HeldPendulum<T> {
     /// Forgets the swing.
     pub fn reset(&mut self) {
         self.state = None;
+        self.trig = (T::lit(0.0), T::lit(1.0));
         self.factor = T::lit(1.0);
     }
 
     /// tan φ now.
     pub fn tan_swing(&self) -> T {
         // Own-precision trigonometry (no libm in the cycle); |φ| ≤ 60°.
-        self.state.map_or(T::lit(0.0), |(phi, _)| {
-            let (s, c) = phi.sin_cos_own();
-            s / c
-        })
+        self.state.map_or(T::lit(0.0), |_| self.trig.0 / self.trig.1)
     }
 
     /// The factor of the load's pull on the cylinder now (see the module doc).
@@ -81,9 +84,14 @@ impl<T: Real> HeldPendulum<T> {
     /// Advances by `dt_s` with the boom at angle, rate and acceleration
     /// (rad, rad/s, rad/s²) held over the step; returns the factor.
     pub fn update(&mut self, angle_rad: T, rate_rad_s: T, accel_rad_s2: T, dt_s: T) -> T {
-        let (l, bl, g) = (self.length_m, self.boom_length_m, self.gravity_m_s2);
         // Own-precision trigonometry: libm's f32 sin/cos run f64 kernels.
-        let (s, c) = angle_rad.sin_cos_own();
+        self.update_at(angle_rad.sin_cos_own(), rate_rad_s, accel_rad_s2, dt_s)
+    }
+
+    /// [`Self::update`] with the boom angle given by its (sin, cos), which a
+    /// bank of pendulums on one boom computes once for all.
+    pub fn update_at(&mut self, (s, c): (T, T), rate_rad_s: T, accel_rad_s2: T, dt_s: T) -> T {
+        let (l, bl, g) = (self.length_m, self.boom_length_m, self.gravity_m_s2);
         let w2 = rate_rad_s * rate_rad_s;
         let ax = -bl * (s * accel_rad_s2 + c * w2);
         let ay = bl * (c * accel_rad_s2 - s * w2);
@@ -102,8 +110,10 @@ impl<T: Real> HeldPendulum<T> {
         }
         let h = dt / n;
         let mut k = T::lit(1.0);
+        // sin φ and cos φ of the state φ are kept from the previous update.
+        let mut trig = if self.state.is_some() { self.trig } else { phi.sin_cos_own() };
         while k <= n {
-            let (sp, cp) = phi.sin_cos_own();
+            let (sp, cp) = if k > T::lit(1.0) { phi.sin_cos_own() } else { trig };
             let acc = -(g * sp + ax * cp + ay * sp) / l;
             phi_dot += acc * h;
             phi += phi_dot * h;
@@ -113,7 +123,9 @@ impl<T: Real> HeldPendulum<T> {
             (phi, phi_dot) = (T::lit(0.0), T::lit(0.0));
         }
         self.state = Some((phi, phi_dot));
-        let (sp, cp) = phi.sin_cos_own();
+        trig = phi.sin_cos_own();
+        self.trig = trig;
+        let (sp, cp) = trig;
         let tension = g * cp - ax * sp + ay * cp + l * phi_dot * phi_dot;
         self.factor = tension / g * (cp + s / c * sp);
         self.factor

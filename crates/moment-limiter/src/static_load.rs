@@ -243,10 +243,11 @@ impl<T: Real> StaticLoadBank<T> {
     /// and acceleration (at the force's instant), `dt_s` after the previous
     /// call; returns the paid-out rope's tan φ (a diagnostic).
     pub fn advance(&mut self, angle_rad: T, rate_rad_s: T, accel_rad_s2: T, dt_s: T) -> T {
+        let boom_trig = angle_rad.sin_cos_own();
         for h in self.hypotheses.iter_mut() {
             h.tan_swing = match h.held.as_mut() {
                 Some(p) => {
-                    p.update(angle_rad, rate_rad_s, accel_rad_s2, dt_s);
+                    p.update_at(boom_trig, rate_rad_s, accel_rad_s2, dt_s);
                     p.tan_swing()
                 }
                 None => h.swing.update(angle_rad, dt_s),
