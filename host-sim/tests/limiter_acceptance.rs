@@ -33,19 +33,19 @@
 //! Run: `cargo test --release -p host-sim --test limiter_acceptance -- --nocapture`
 //! (prints the band per maneuver and the delays).
 
+mod common;
+
+use common::{model, rated_kg};
 use host_sim::synth_core;
 
 use std::sync::OnceLock;
 
-use crane_model::loads::load_model::{BoomState, HookLoadModel};
-use crane_model::structure::modal::{MeshRefinement, THESIS_BASIS};
-use crane_model::multibody::ThesisModel;
+use crane_model::loads::load_model::HookLoadModel;
 use crane_model::data::profile::RampShape;
 use crane_model::sim::simulation::{thesis_cases, Direction, Maneuver};
 use crane_model::loads::thesis_modes::thesis_load_model_f32;
-use crane_model::{CraneData, Real};
+use crane_model::Real;
 use moment_limiter::calibration::CalibrationLearner;
-use moment_limiter::capacity::Capacity;
 use moment_limiter::cycle::{Limiter, LimiterConfig};
 use moment_limiter::io::Frame;
 use moment_limiter::load_estimate::Calibration;
@@ -56,20 +56,6 @@ use synth_core::{options_for_rate, simulate, synthesize, SensorModel, SynthRow, 
 const RATE_HZ: f64 = 100.0;
 const SETTLE_S: f64 = 1.0;
 
-fn model() -> &'static ThesisModel<f64> {
-    static M: OnceLock<ThesisModel<f64>> = OnceLock::new();
-    M.get_or_init(|| {
-        ThesisModel::build(&CraneData::coles_mobile_930(), MeshRefinement::THESIS, &THESIS_BASIS)
-            .expect("thesis model")
-    })
-}
-
-fn rated_kg(angle_rad: f64) -> f64 {
-    Capacity::<f64>::standard()
-        .rating(model(), BoomState { angle_rad, rate_rad_s: 0.0 })
-        .expect("rating")
-        .rated_load_kg
-}
 
 /// The log rows of a maneuver (1 s hold before, 1 s after).
 fn rows(m: &Maneuver, seed: u32) -> Vec<SynthRow> {

@@ -1,10 +1,34 @@
-//! Helpers shared by the CLI test binaries of `host-sim/tests`: the built
-//! `crane-sim`, the example logs, a replay run and its output.
+//! Helpers shared by the test binaries of `host-sim/tests`: the built
+//! `crane-sim`, the example logs, a replay run and its output, and the thesis
+//! model with its rated load for the limiter's acceptance tests.
 // Each test binary compiles this module and uses only some of it.
 #![allow(dead_code)]
 
+use crane_model::loads::load_model::BoomState;
+use crane_model::multibody::ThesisModel;
+use crane_model::structure::modal::{MeshRefinement, THESIS_BASIS};
+use crane_model::CraneData;
+use moment_limiter::capacity::Capacity;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
+use std::sync::OnceLock;
+
+/// The thesis model in f64, built once per test binary.
+pub fn model() -> &'static ThesisModel<f64> {
+    static M: OnceLock<ThesisModel<f64>> = OnceLock::new();
+    M.get_or_init(|| {
+        ThesisModel::build(&CraneData::coles_mobile_930(), MeshRefinement::THESIS, &THESIS_BASIS)
+            .expect("thesis model")
+    })
+}
+
+/// The true rated load at a still boom angle (kg): the grading's truth.
+pub fn rated_kg(angle_rad: f64) -> f64 {
+    Capacity::<f64>::standard()
+        .rating(model(), BoomState { angle_rad, rate_rad_s: 0.0 })
+        .expect("rating")
+        .rated_load_kg
+}
 
 /// The `crane-sim` binary cargo built for these tests.
 pub fn bin() -> Command {
