@@ -4,15 +4,20 @@
 //! on the board (the JSON reader made the board image 71.5 KB, over its
 //! 64 KiB flash budget; this decoder is a few hundred bytes).
 //!
-//! ## Format, version [`BLOB_FORMAT`] (60 bytes, little-endian)
+//! ## Format, version [`BLOB_FORMAT`] = 2 (76 bytes, little-endian)
 //!
 //! | bytes | holds |
 //! |---|---|
 //! | 0–3 | magic `LMLC` |
 //! | 4–5 | blob format version, [`BLOB_FORMAT`] |
 //! | 6–7 | calibration schema version, [`CALIBRATION_VERSION`] |
-//! | 8–55 | the six values of [`CALIBRATION_KEYS`], in its order, each an `f64` |
-//! | 56–59 | CRC-32 ([`crate::crc`]) of bytes 0–55 |
+//! | 8–71 | the eight values of [`CALIBRATION_KEYS`], in its order, each an `f64` |
+//! | 72–75 | CRC-32 ([`crate::crc`]) of bytes 0–71 |
+//!
+//! **Format 1** (60 bytes: schema version 1, the first six values, CRC at
+//! 56–59), what boards calibrated before the seal law hold, is still
+//! decoded, as the constant friction it was (b = 0): a board keeps its
+//! calibration across a firmware update. The encoder writes format 2 only.
 //!
 //! Values are stored as the `f64` the JSON reader read, so a blob decodes to
 //! exactly the calibration the JSON file gives, in `f64` on the host and, by
@@ -28,16 +33,22 @@
 use crate::crc::crc32;
 use crane_model::Real;
 use moment_limiter::tools::config_file::{
-    check_calibration, CalibrationFileError, CALIBRATION_KEYS, CALIBRATION_VERSION,
+    calibration_from_values, calibration_values, check_calibration, CalibrationFileError,
+    CALIBRATION_KEYS, CALIBRATION_VERSION, CALIBRATION_VERSION_1, V1_KEYS,
 };
 use moment_limiter::load_estimate::Calibration;
 
 /// Magic at the start of a calibration blob.
 pub const BLOB_MAGIC: [u8; 4] = *b"LMLC";
-/// The blob format this decoder reads and the encoder writes.
-pub const BLOB_FORMAT: u16 = 1;
-/// Bytes of a calibration blob.
+/// The blob format the encoder writes (the decoder also reads
+/// [`BLOB_FORMAT_1`]).
+pub const BLOB_FORMAT: u16 = 2;
+/// The first blob format: schema version 1, six values.
+pub const BLOB_FORMAT_1: u16 = 1;
+/// Bytes of a calibration blob (format 2).
 pub const BLOB_LEN: usize = 8 + 8 * CALIBRATION_KEYS.len() + 4;
+/// Bytes of a format-1 blob.
+pub const BLOB_LEN_1: usize = 8 + 8 * V1_KEYS + 4;
 const VALUES_AT: usize = 8;
 const CRC_AT: usize = BLOB_LEN - 4;
 
@@ -49,7 +60,7 @@ pub enum CalibrationBlobError {
     /// The store could not be read (flash error, corrupt journal, or the
     /// store's own CRC-32 of the blob failed).
     Unreadable,
-    /// Not [`BLOB_LEN`] bytes.
+    /// Not [`BLOB_LEN`] (format 2) nor [`BLOB_LEN_1`] (format 1) bytes.
     Length(usize),
     /// The magic is not [`BLOB_MAGIC`].
     Magic,
@@ -117,19 +128,23 @@ impl core::fmt::Display for CalibrationBlobError {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         match self {
             CalibrationBlobError::Length(n) => {
-                write!(f, "{} ({n} bytes, not {BLOB_LEN})", self.as_str())
+                write!(
+                    f,
+                    "{} ({n} bytes, not {BLOB_LEN} nor {BLOB_LEN_1})",
+                    self.as_str()
+                )
             }
             CalibrationBlobError::Format(v) => {
                 write!(
                     f,
-                    "{} {v} (this firmware reads {BLOB_FORMAT})",
+                    "{} {v} (this firmware reads {BLOB_FORMAT_1} and {BLOB_FORMAT})",
                     self.as_str()
                 )
             }
             CalibrationBlobError::SchemaVersion(v) => {
                 write!(
                     f,
-                    "{} {v} (this firmware reads {CALIBRATION_VERSION})",
+                    "{} {v} (this firmware reads {CALIBRATION_VERSION_1} and {CALIBRATION_VERSION})",
                     self.as_str()
                 )
             }
@@ -139,17 +154,6 @@ impl core::fmt::Display for CalibrationBlobError {
     }
 }
 
-fn values(cal: &Calibration<f64>) -> [f64; 6] {
-    [
-        cal.friction_up_n,
-        cal.friction_down_n,
-        cal.force_offset_n,
-        cal.p1_offset_bar,
-        cal.p2_offset_bar,
-        cal.angle_offset_deg,
-    ]
-}
-
 /// The blob of a calibration, after checking it against the schema's
 /// bounds (a calibration the board would refuse is never encoded).
 pub fn encode_calibration(cal: &Calibration<f64>) -> Result<[u8; BLOB_LEN], CalibrationBlobError> {
@@ -157,9 +161,9 @@ pub fn encode_calibration(cal: &Calibration<f64>) -> Result<[u8; BLOB_LEN], Cali
     let mut b = [0u8; BLOB_LEN];
     crate::put(&mut b, 0, &BLOB_MAGIC);
     crate::put(&mut b, 4, &BLOB_FORMAT.to_le_bytes());
-    // The schema version is 1: it fits 16 bits with room to spare.
+    // The schema version is 2: it fits 16 bits with room to spare.
     crate::put(&mut b, 6, &(CALIBRATION_VERSION as u16).to_le_bytes());
-    for (i, v) in values(cal).iter().enumerate() {
+    for (i, v) in calibration_values(cal).iter().enumerate() {
         crate::put(&mut b, VALUES_AT + 8 * i, &v.to_le_bytes());
     }
     let crc = crc32(b.get(..CRC_AT).unwrap_or_default());
@@ -167,7 +171,7 @@ pub fn encode_calibration(cal: &Calibration<f64>) -> Result<[u8; BLOB_LEN], Cali
     Ok(b)
 }
 
-fn u16_at(b: &[u8; BLOB_LEN], at: usize) -> u16 {
+fn u16_at(b: &[u8], at: usize) -> u16 {
     let mut w = [0u8; 2];
     for (d, s) in w.iter_mut().zip(b.iter().skip(at)) {
         *d = *s;
@@ -175,55 +179,47 @@ fn u16_at(b: &[u8; BLOB_LEN], at: usize) -> u16 {
     u16::from_le_bytes(w)
 }
 
-/// Decodes and checks a blob (see the module doc for the order of the
-/// checks), and converts the values to `T` as the JSON reader does.
+/// Decodes and checks a blob of format 2 or 1 (see the module doc for the
+/// order of the checks), and converts the values to `T` as the JSON reader
+/// does.
 pub fn decode_calibration<T: Real>(bytes: &[u8]) -> Result<Calibration<T>, CalibrationBlobError> {
-    let b: &[u8; BLOB_LEN] = bytes
-        .try_into()
-        .map_err(|_| CalibrationBlobError::Length(bytes.len()))?;
+    // The length says the format; the format field must agree with it.
+    let (keys, expected_format, schema_version) = match bytes.len() {
+        BLOB_LEN => (CALIBRATION_KEYS.len(), BLOB_FORMAT, CALIBRATION_VERSION),
+        BLOB_LEN_1 => (V1_KEYS, BLOB_FORMAT_1, CALIBRATION_VERSION_1),
+        n => return Err(CalibrationBlobError::Length(n)),
+    };
+    let b = bytes;
     if b.get(..4) != Some(&BLOB_MAGIC[..]) {
         return Err(CalibrationBlobError::Magic);
     }
-    let (body, crc) = b.split_at(CRC_AT);
+    let crc_at = b.len().saturating_sub(4);
+    let (body, crc) = b.split_at(crc_at);
     let mut stored = [0u8; 4];
     crate::put(&mut stored, 0, crc);
     if crc32(body) != u32::from_le_bytes(stored) {
         return Err(CalibrationBlobError::Crc);
     }
     let format = u16_at(b, 4);
-    if format != BLOB_FORMAT {
+    if format != expected_format {
         return Err(CalibrationBlobError::Format(format));
     }
     let schema = u16_at(b, 6);
-    if u32::from(schema) != CALIBRATION_VERSION {
+    if u32::from(schema) != schema_version {
         return Err(CalibrationBlobError::SchemaVersion(schema));
     }
-    let mut v = [0.0f64; 6];
-    for (i, out) in v.iter_mut().enumerate() {
+    // Format 1 holds no seal-law share: b = 0, the constant friction it was.
+    let mut v = [0.0f64; CALIBRATION_KEYS.len()];
+    for (i, out) in v.iter_mut().enumerate().take(keys) {
         let mut w = [0u8; 8];
         for (d, s) in w.iter_mut().zip(b.iter().skip(VALUES_AT + 8 * i)) {
             *d = *s;
         }
         *out = f64::from_le_bytes(w);
     }
-    let [fu, fd, fo, p1, p2, a] = v;
-    let cal = Calibration {
-        friction_up_n: fu,
-        friction_down_n: fd,
-        force_offset_n: fo,
-        p1_offset_bar: p1,
-        p2_offset_bar: p2,
-        angle_offset_deg: a,
-    };
+    let cal: Calibration<f64> = calibration_from_values(&v);
     check_calibration(&cal).map_err(CalibrationBlobError::OutOfBounds)?;
-    Ok(Calibration {
-        friction_up_n: T::lit(fu),
-        friction_down_n: T::lit(fd),
-        force_offset_n: T::lit(fo),
-        p1_offset_bar: T::lit(p1),
-        p2_offset_bar: T::lit(p2),
-        angle_offset_deg: T::lit(a),
-    })
+    Ok(calibration_from_values(&v))
 }
 
 /// Stores a calibration blob under [`crate::store::Key::Calibration`] with
@@ -260,7 +256,7 @@ pub fn load_calibration<T: Real, F: crate::journal::Flash>(
         Err(crate::store::StoreError::TooBig) => Err(CalibrationBlobError::Length(BLOB_LEN + 1)),
         Err(crate::store::StoreError::BadBlob) => Err(CalibrationBlobError::Crc),
         Err(_) => Err(CalibrationBlobError::Unreadable),
-        Ok(Some(blob)) if blob.version != BLOB_FORMAT => {
+        Ok(Some(blob)) if blob.version != BLOB_FORMAT && blob.version != BLOB_FORMAT_1 => {
             Err(CalibrationBlobError::Format(blob.version))
         }
         Ok(Some(blob)) => {

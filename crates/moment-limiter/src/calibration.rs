@@ -24,27 +24,65 @@
 //! learner runs on recorded logs, after the fact, so it can afford to look
 //! ahead; the limiter cannot and does not need to.)
 //!
+//! **The seal law per direction.** Seal friction grows with the pressure
+//! behind the seal, friction = a + b·|F| with F the piston force
+//! ([`crate::load_estimate`]). On a run with a known hook load W (0 for the
+//! unloaded run, a test weight for `--known-load-kg`, as SAE J376
+//! calibrates with test weights) the model gives F = F_model(W) + J·θ̈ at
+//! every steady sample, and the residual is
+//!
+//! r = F_meas − J·θ̈ − F_model(W) = offset + s·(a + b·F), s = ±1 up/down,
+//!
+//! a straight line in F per direction. The learner keeps, per direction,
+//! the running means and co-moments of (F, r) (Welford's update, stable in
+//! f32 where the plain sums of F² ≈ 10¹³ N² would cancel) and fits the line
+//! by least squares: b = s·cov(F, r)/var(F), a = s·(mean r − offset) −
+//! b·mean F. The slope is observable only where F varies: an unloaded run
+//! from 40° to 80° spans the empty boom's force over a wide range; a run
+//! that spans less than [`MIN_FORCE_SPREAD`] (standard deviation of F over
+//! its mean) or whose slope's standard error exceeds [`MAX_SLOPE_SE`] keeps
+//! b = 0 and says so ([`DirectionFit::slope_observable`]). A fitted b < 0 (a
+//! friction that falls with pressure, noise on a constant law) is clamped to
+//! 0 with a refit of a; a < 0 to 0.
+//!
 //! **Offset and friction apart.** At rest the seals release (the simulator's
 //! standstill release, and what a settled cylinder does), so the residual
 //! of a still boom is the force offset alone: the learner averages it over
 //! the samples before the first motion of each log and those long after a
 //! stop (the limiter's [`Measurement::static_friction_share`] below 1 %),
 //! r_rest. With at least as many rest samples as the steady minimum, the
-//! calibration is force_offset = r_rest, friction_up = max(0, r_up −
-//! r_rest), friction_down = max(0, r_rest − r_down): a friction per
-//! direction, and the offset the limiter also removes at rest. Without
+//! offset is r_rest and each direction's law is fitted against it. Without
 //! them, up and down cannot be told from the offset, and the learner
-//! reports the symmetric split force_offset = (r_up + r_down)/2,
-//! friction_up = friction_down = max(0, (r_up − r_down)/2), which is exact
-//! while moving. Transducer zero offsets (bar) and the pendulum offset are
-//! not observable from the force alone and are not learned (0); a
-//! technician may set them in the calibration file.
+//! reports the symmetric split of the lines' intercepts c_up, c_down:
+//! offset = (c_up + c_down)/2, a_up = a_down = max(0, (c_up − c_down)/2),
+//! which is exact while moving. Transducer zero offsets (bar) and the
+//! pendulum offset are not observable from the force alone (a pressure
+//! offset on both transducers is a force offset; an angle offset is a
+//! model error the offset and the slope absorb in part) and are not learned
+//! (0); a technician may set them in the calibration file. The pendulum's
+//! lag is not learned either: the limiter aligns force and angle with the
+//! configured lag, and the steady samples the fit takes carry no
+//! information about it (the ramps do, but their residual is dominated by
+//! the boom's and the load's dynamics).
+//!
+//! Several runs combine by merging their moments ([`CalibrationLearner::merge`],
+//! Chan's formula): `crane-sim calibrate` learns each log on its own learner,
+//! checks each known-load run against the unloaded runs' law, then fits the
+//! merged moments.
 
 use crane_model::loads::load_model::HookLoadModel;
 use crane_model::{ModelError, Real};
 
 use crate::io::Measurement;
-use crate::load_estimate::{model_force_terms, Calibration, Direction, Friction};
+use crate::load_estimate::{model_force_terms, Calibration, Direction, Friction, MAX_PER_FORCE};
+
+/// Least spread of the piston force over a direction's steady samples
+/// (standard deviation over mean) for the slope b to be observable.
+pub const MIN_FORCE_SPREAD: f64 = 0.05;
+
+/// Largest standard error of the fitted slope b for it to be taken (–): at
+/// 0.003 the slope's error is ±0.3 % of the force, ±1.5 kN on a 500 kN lift.
+pub const MAX_SLOPE_SE: f64 = 0.003;
 
 /// Why no calibration could be learned.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -115,19 +153,188 @@ impl<T: Real> SteadyMotion<T> {
 /// the oldest is committed early.
 pub const LOOKAHEAD_CAPACITY: usize = 512;
 
-/// A residual waiting for its look-ahead: (time moving when seen, residual, up?).
-type Pending<T> = (T, T, bool);
+/// A residual waiting for its look-ahead: (time moving when seen, force F,
+/// residual, up?).
+type Pending<T> = (T, T, T, bool);
 
-/// Running sums of the residual per direction.
+/// Running means and co-moments of (x, y) = (piston force F, residual r)
+/// (Welford's update; see the module doc).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Moments<T> {
+    /// Number of samples.
+    pub n: u32,
+    /// Mean of x (N).
+    pub mean_x: T,
+    /// Mean of y (N).
+    pub mean_y: T,
+    /// Σ(x − x̄)² (N²).
+    pub cxx: T,
+    /// Σ(x − x̄)(y − ȳ) (N²).
+    pub cxy: T,
+    /// Σ(y − ȳ)² (N²).
+    pub cyy: T,
+}
+
+impl<T: Real> Moments<T> {
+    /// No samples.
+    pub fn new() -> Self {
+        let z = T::lit(0.0);
+        Self {
+            n: 0,
+            mean_x: z,
+            mean_y: z,
+            cxx: z,
+            cxy: z,
+            cyy: z,
+        }
+    }
+
+    /// Adds one sample.
+    pub fn add(&mut self, x: T, y: T) {
+        self.n = self.n.saturating_add(1);
+        let n = T::lit(f64::from(self.n));
+        let dx = x - self.mean_x;
+        self.mean_x += dx / n;
+        let dy = y - self.mean_y;
+        self.mean_y += dy / n;
+        self.cxx += dx * (x - self.mean_x);
+        self.cxy += dx * (y - self.mean_y);
+        self.cyy += dy * (y - self.mean_y);
+    }
+
+    /// Adds the samples of `other` (Chan's formula).
+    pub fn merge(&mut self, other: &Self) {
+        if other.n == 0 {
+            return;
+        }
+        if self.n == 0 {
+            *self = *other;
+            return;
+        }
+        let (na, nb) = (T::lit(f64::from(self.n)), T::lit(f64::from(other.n)));
+        let n = na + nb;
+        let dx = other.mean_x - self.mean_x;
+        let dy = other.mean_y - self.mean_y;
+        let w = na * nb / n;
+        self.mean_x += dx * nb / n;
+        self.mean_y += dy * nb / n;
+        self.cxx += other.cxx + dx * dx * w;
+        self.cxy += other.cxy + dx * dy * w;
+        self.cyy += other.cyy + dy * dy * w;
+        self.n = self.n.saturating_add(other.n);
+    }
+}
+
+impl<T: Real> Default for Moments<T> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// The friction law fitted for one direction and how well it fits.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DirectionFit<T> {
+    /// Constant part a (N, ≥ 0).
+    pub a_n: T,
+    /// Share b of the piston force (–, 0 … [`MAX_PER_FORCE`]).
+    pub b: T,
+    /// `false`: the force did not vary enough for b (it is 0).
+    pub slope_observable: bool,
+    /// The slope as the least squares gave it, before clamping (–).
+    pub raw_b: T,
+    /// Standard error of the raw slope (–).
+    pub b_se: T,
+    /// Root mean square of the fit's residuals (N).
+    pub rms_n: T,
+    /// Samples.
+    pub n: u32,
+    /// Mean and standard deviation of the piston force over the samples (N).
+    pub force_mean_n: T,
+    /// Standard deviation of the piston force over the samples (N).
+    pub force_sd_n: T,
+}
+
+/// Fits z = s·(r − offset) = a + b·F over moments of (F, r).
+fn fit_direction<T: Real>(m: &Moments<T>, s: T, offset: T) -> DirectionFit<T> {
+    let zero = T::lit(0.0);
+    let n = T::lit(f64::from(m.n.max(1)));
+    let mean_z = s * (m.mean_y - offset);
+    let cxz = s * m.cxy;
+    let czz = m.cyy;
+    let sd = (m.cxx / n).max(zero).sqrt();
+    let raw_b = if m.cxx > zero { cxz / m.cxx } else { zero };
+    let dof = T::lit(f64::from(m.n.saturating_sub(2).max(1)));
+    let ssr_line = (czz - raw_b * cxz).max(zero);
+    let b_se = if m.cxx > zero {
+        (ssr_line / dof / m.cxx).sqrt()
+    } else {
+        T::lit(f64::INFINITY)
+    };
+    let observable = m.mean_x.abs() > zero
+        && sd >= T::lit(MIN_FORCE_SPREAD) * m.mean_x.abs()
+        && b_se <= T::lit(MAX_SLOPE_SE);
+    let mut b = if observable {
+        raw_b.max(zero).min(T::lit(MAX_PER_FORCE))
+    } else {
+        zero
+    };
+    let mut a = mean_z - b * m.mean_x;
+    if a < zero {
+        // A law through the origin: b from Σx·z/Σx² (uncentred).
+        a = zero;
+        if observable {
+            let sxx = m.cxx + n * m.mean_x * m.mean_x;
+            let sxz = cxz + n * m.mean_x * mean_z;
+            b = if sxx > zero { (sxz / sxx).max(zero).min(T::lit(MAX_PER_FORCE)) } else { zero };
+        }
+    }
+    // Σ(z − a − b·x)² from the moments.
+    let bias = mean_z - a - b * m.mean_x;
+    let ssr = (czz - T::lit(2.0) * b * cxz + b * b * m.cxx + n * bias * bias).max(zero);
+    DirectionFit {
+        a_n: a,
+        b,
+        slope_observable: observable,
+        raw_b,
+        b_se,
+        rms_n: (ssr / n).sqrt(),
+        n: m.n,
+        force_mean_n: m.mean_x,
+        force_sd_n: sd,
+    }
+}
+
+/// The learned calibration and its fit.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Learned<T> {
+    /// What the limiter takes.
+    pub calibration: Calibration<T>,
+    /// The fit moving up.
+    pub up: DirectionFit<T>,
+    /// The fit moving down.
+    pub down: DirectionFit<T>,
+    /// `true`: the offset came from samples at rest; `false`: the
+    /// symmetric split (see the module doc).
+    pub offset_from_rest: bool,
+}
+
+/// Running moments of the residual per direction for one or more runs.
 #[derive(Debug, Clone)]
 pub struct CalibrationLearner<T> {
     steady: SteadyMotion<T>,
     pending: heapless::Deque<Pending<T>, LOOKAHEAD_CAPACITY>,
-    up: (T, u32),
-    down: (T, u32),
+    up: Moments<T>,
+    down: Moments<T>,
     rest: (T, u32),
     /// Sum of the model's piston force per kg over the rest samples.
     rest_per_kg: T,
+    /// Sum of the model's piston force per kg over the steady samples.
+    steady_per_kg: T,
+    /// The known hook load of the runs observed now (kg).
+    load_kg: T,
+    /// A law to check against: the largest |residual| per direction.
+    check: Option<Calibration<T>>,
+    max_residual: (T, T),
 }
 
 impl<T: Real> Default for CalibrationLearner<T> {
@@ -137,25 +344,52 @@ impl<T: Real> Default for CalibrationLearner<T> {
 }
 
 impl<T: Real> CalibrationLearner<T> {
-    /// No samples yet; the [`SteadyMotion::standard`] criteria.
+    /// No samples yet; the [`SteadyMotion::standard`] criteria; unloaded.
     pub fn new() -> Self {
         Self::with_steady_motion(SteadyMotion::standard())
     }
 
-    /// No samples yet; the given criteria.
+    /// No samples yet; the given criteria; unloaded.
     pub fn with_steady_motion(steady: SteadyMotion<T>) -> Self {
         Self {
             steady,
             pending: heapless::Deque::new(),
-            up: (T::lit(0.0), 0),
-            down: (T::lit(0.0), 0),
+            up: Moments::new(),
+            down: Moments::new(),
             rest: (T::lit(0.0), 0),
             rest_per_kg: T::lit(0.0),
+            steady_per_kg: T::lit(0.0),
+            load_kg: T::lit(0.0),
+            check: None,
+            max_residual: (T::lit(0.0), T::lit(0.0)),
         }
     }
 
-    /// Adds one sample of an unloaded run (samples not in steady motion are
-    /// ignored).
+    /// A learner for runs with a known hook load (kg): the test weight of
+    /// `--known-load-kg`.
+    pub fn with_known_load(load_kg: T) -> Self {
+        Self {
+            load_kg,
+            ..Self::new()
+        }
+    }
+
+    /// A learner that, fed the same runs again, measures the largest
+    /// residual of `law` per direction ([`Self::max_residual_n`]).
+    pub fn checking(law: Calibration<T>, load_kg: T) -> Self {
+        Self {
+            check: Some(law),
+            ..Self::with_known_load(load_kg)
+        }
+    }
+
+    /// The known hook load of the runs (kg; 0 unloaded).
+    pub fn known_load_kg(&self) -> T {
+        self.load_kg
+    }
+
+    /// Adds one sample of a run (samples not in steady motion are
+    /// ignored; at rest, the offset).
     pub fn observe<M: HookLoadModel<T>>(
         &mut self,
         model: &M,
@@ -172,7 +406,7 @@ impl<T: Real> CalibrationLearner<T> {
                 if released {
                     let (f, inertia) =
                         model_force_terms(model, m.boom.angle_rad, m.accel_rad_s2())?;
-                    let r = m.piston_force_n - inertia - f.at_zero;
+                    let r = m.piston_force_n - inertia - f.at(self.load_kg);
                     self.rest.0 += r;
                     self.rest.1 = self.rest.1.saturating_add(1);
                     self.rest_per_kg += f.per_kg;
@@ -180,7 +414,7 @@ impl<T: Real> CalibrationLearner<T> {
                 return Ok(());
             }
         };
-        if !self.steady.accepts(m) || self.pending.front().is_some_and(|p| p.2 != up) {
+        if !self.steady.accepts(m) || self.pending.front().is_some_and(|p| p.3 != up) {
             // The motion was not steady: nor were the last `lookahead_s`.
             self.pending.clear();
             if !self.steady.accepts(m) {
@@ -188,25 +422,39 @@ impl<T: Real> CalibrationLearner<T> {
             }
         }
         let (f, inertia) = model_force_terms(model, m.boom.angle_rad, m.accel_rad_s2())?;
-        let r = m.piston_force_n - inertia - f.at_zero;
+        let at_load = f.at(self.load_kg);
+        let r = m.piston_force_n - inertia - at_load;
+        let x = (at_load + inertia).abs();
+        self.steady_per_kg += f.per_kg;
         let now = m.moving_for_s;
-        while let Some(&(t, _, _)) = self.pending.front() {
+        while let Some(&(t, _, _, _)) = self.pending.front() {
             if now - t < self.steady.lookahead_s && !self.pending.is_full() {
                 break;
             }
-            if let Some((_, r, up)) = self.pending.pop_front() {
-                self.commit(r, up);
+            if let Some((_, x, r, up)) = self.pending.pop_front() {
+                self.commit(x, r, up);
             }
         }
         // Not full here: the loop above made room.
-        let _ = self.pending.push_back((now, r, up));
+        let _ = self.pending.push_back((now, x, r, up));
         Ok(())
     }
 
-    fn commit(&mut self, r: T, up: bool) {
-        let slot = if up { &mut self.up } else { &mut self.down };
-        slot.0 += r;
-        slot.1 = slot.1.saturating_add(1);
+    fn commit(&mut self, x: T, r: T, up: bool) {
+        if up {
+            self.up.add(x, r);
+        } else {
+            self.down.add(x, r);
+        }
+        if let Some(c) = &self.check {
+            let d = if up { Direction::Up } else { Direction::Down };
+            // The law's prediction of r at the true force x.
+            let (a, b) = c.law(d).unwrap_or((T::lit(0.0), T::lit(0.0)));
+            let s = if up { T::lit(1.0) } else { T::lit(-1.0) };
+            let e = (r - c.force_offset_n - s * (a + b * x)).abs();
+            let slot = if up { &mut self.max_residual.0 } else { &mut self.max_residual.1 };
+            *slot = slot.max(e);
+        }
     }
 
     /// Ends a log: the residuals still waiting for their look-ahead are
@@ -215,9 +463,32 @@ impl<T: Real> CalibrationLearner<T> {
         self.pending.clear();
     }
 
+    /// Adds the samples of another learner's runs (its pending look-ahead
+    /// is not taken: end its log first).
+    pub fn merge(&mut self, other: &Self) {
+        self.up.merge(&other.up);
+        self.down.merge(&other.down);
+        self.rest.0 += other.rest.0;
+        self.rest.1 = self.rest.1.saturating_add(other.rest.1);
+        self.rest_per_kg += other.rest_per_kg;
+        self.steady_per_kg += other.steady_per_kg;
+        self.max_residual.0 = self.max_residual.0.max(other.max_residual.0);
+        self.max_residual.1 = self.max_residual.1.max(other.max_residual.1);
+    }
+
     /// Number of (up, down) samples counted.
     pub fn counts(&self) -> (u32, u32) {
-        (self.up.1, self.down.1)
+        (self.up.n, self.down.n)
+    }
+
+    /// The moments (up, down).
+    pub fn moments(&self) -> (Moments<T>, Moments<T>) {
+        (self.up, self.down)
+    }
+
+    /// Largest |residual| (up, down) of the law given to [`Self::checking`] (N).
+    pub fn max_residual_n(&self) -> (T, T) {
+        self.max_residual
     }
 
     /// Number of samples at rest with the seals released.
@@ -227,11 +498,18 @@ impl<T: Real> CalibrationLearner<T> {
 
     /// The hook load (kg) the mean rest residual would be (the residual over
     /// the model's mean force per kg at the rest samples): what a load left
-    /// on the "unloaded" run weighs.
+    /// on the "unloaded" run weighs, or how far a known-load run is from its
+    /// stated weight.
     pub fn rest_load_kg(&self) -> Option<T> {
         let per_kg = self.rest_per_kg / T::lit(f64::from(self.rest.1.max(1)));
         let r = self.mean_rest_residual_n()?;
         (per_kg > T::lit(0.0)).then(|| r / per_kg)
+    }
+
+    /// The model's mean piston force per kg over the steady samples (N/kg).
+    pub fn steady_per_kg(&self) -> Option<T> {
+        let n = self.up.n.saturating_add(self.down.n);
+        (n > 0).then(|| self.steady_per_kg / T::lit(f64::from(n)))
     }
 
     /// Mean residual at rest (N): the force offset, if any rest sample.
@@ -241,37 +519,87 @@ impl<T: Real> CalibrationLearner<T> {
 
     /// Mean residuals (r_up, r_down) in N, if both directions have samples.
     pub fn mean_residuals_n(&self) -> Option<(T, T)> {
-        let mean = |(s, n): (T, u32)| (n > 0).then(|| s / T::lit(f64::from(n)));
-        Some((mean(self.up)?, mean(self.down)?))
+        (self.up.n > 0 && self.down.n > 0).then_some((self.up.mean_y, self.down.mean_y))
+    }
+
+    /// Mean of the residual left by `cal`'s law over this learner's steady
+    /// samples (N), if any: how far these runs are from the law.
+    pub fn mean_law_residual_n(&self, cal: &Calibration<T>) -> Option<T> {
+        let one = T::lit(1.0);
+        let mut sum = T::lit(0.0);
+        for (m, s, d) in [(self.up, one, Direction::Up), (self.down, -one, Direction::Down)] {
+            let (a, b) = cal.law(d)?;
+            sum += T::lit(f64::from(m.n))
+                * (m.mean_y - cal.force_offset_n - s * (a + b * m.mean_x));
+        }
+        let n = self.up.n.saturating_add(self.down.n);
+        (n > 0).then(|| sum / T::lit(f64::from(n)))
     }
 
     /// The calibration, if each direction has at least `min_samples` samples.
     pub fn finish(&self, min_samples: u32) -> Result<Calibration<T>, CalibrationError> {
-        for (up, n) in [(true, self.up.1), (false, self.down.1)] {
+        self.fit(min_samples).map(|l| l.calibration)
+    }
+
+    /// The calibration and its fit, if each direction has at least
+    /// `min_samples` samples (see the module doc).
+    pub fn fit(&self, min_samples: u32) -> Result<Learned<T>, CalibrationError> {
+        for (up, n) in [(true, self.up.n), (false, self.down.n)] {
             if n < min_samples.max(1) {
                 return Err(CalibrationError::TooFewSamples { up, found: n });
             }
         }
-        let (r_up, r_down) = self.mean_residuals_n().ok_or(CalibrationError::NotFinite)?;
-        let half = T::lit(0.5);
-        let zero = T::lit(0.0);
-        let (offset, up, down) = match self.mean_rest_residual_n() {
-            Some(rest) if self.rest.1 >= min_samples.max(1) => {
-                (rest, (r_up - rest).max(zero), (rest - r_down).max(zero))
-            }
+        let one = T::lit(1.0);
+        let (offset, from_rest) = match self.mean_rest_residual_n() {
+            Some(rest) if self.rest.1 >= min_samples.max(1) => (rest, true),
             _ => {
-                let f = ((r_up - r_down) * half).max(zero);
-                ((r_up + r_down) * half, f, f)
+                // Intercepts of the lines r = c + s·b·F with the offset
+                // unknown: the symmetric split.
+                let c_up = intercept(&self.up, one);
+                let c_down = intercept(&self.down, -one);
+                ((c_up + c_down) * T::lit(0.5), false)
             }
         };
-        if !(offset.is_finite() && up.is_finite() && down.is_finite()) {
-            return Err(CalibrationError::NotFinite);
-        }
-        Ok(Calibration {
-            friction_up_n: up,
-            friction_down_n: down,
+        let up = fit_direction(&self.up, one, offset);
+        let down = fit_direction(&self.down, -one, offset);
+        let cal = Calibration {
+            friction_up_n: up.a_n,
+            friction_down_n: down.a_n,
+            friction_up_per_force: up.b,
+            friction_down_per_force: down.b,
             force_offset_n: offset,
             ..Calibration::none()
+        };
+        let finite = [offset, up.a_n, up.b, up.rms_n, down.a_n, down.b, down.rms_n]
+            .iter()
+            .all(|v| v.is_finite());
+        if !finite {
+            return Err(CalibrationError::NotFinite);
+        }
+        Ok(Learned {
+            calibration: cal,
+            up,
+            down,
+            offset_from_rest: from_rest,
         })
+    }
+}
+
+/// The residual's line at F = 0, s·b taken as the fit gives it (the
+/// offset plus s·a): for the symmetric split.
+fn intercept<T: Real>(m: &Moments<T>, s: T) -> T {
+    let b = fit_direction(m, s, m.mean_y).b_unclamped_a();
+    m.mean_y - s * b * m.mean_x
+}
+
+impl<T: Real> DirectionFit<T> {
+    /// The slope as gated for observability and clamped to its bounds, but
+    /// not refitted for a negative a.
+    fn b_unclamped_a(&self) -> T {
+        if self.slope_observable {
+            self.raw_b.max(T::lit(0.0)).min(T::lit(MAX_PER_FORCE))
+        } else {
+            T::lit(0.0)
+        }
     }
 }

@@ -6,9 +6,27 @@
 //! (the up and down traces of the thesis differ by it), and a zero offset:
 //!
 //! F_meas = F_model(W) + force_offset + friction(direction), with
-//! friction(Up) = +friction_up_n, friction(Down) = −friction_down_n,
+//! friction(Up) = +(a_up + b_up·|F|), friction(Down) = −(a_down + b_down·|F|),
 //!
-//! so W solves F_model(W) = F_meas − force_offset − friction(direction). The
+//! where F is the piston force the cylinder really exerts (the seal is
+//! pressed harder the higher the pressure behind it: the constant a is
+//! `friction_*_n`, the share b is `friction_*_per_force`), and W solves
+//! F_model(W) = F_meas − force_offset − friction(direction).
+//!
+//! **Which force the seal law takes.** F is the true force F_meas −
+//! force_offset − friction, not the model's force at the estimated load:
+//! the model's force at W_est would make the friction depend on the
+//! estimate it corrects (a loop whose gain is b·per_kg, and whose error
+//! feeds back through the estimate's own filters), while the true force
+//! follows from the measured one in closed form. With s = ±1 the sign of
+//! the motion and F ≥ 0 (the boom hangs on the piston side),
+//! F_meas − offset = F + s·(a + b·F), so
+//!
+//! F = (F_meas − offset − s·a)/(1 + s·b), friction = (F_meas − offset) − F,
+//!
+//! one division, no iteration, exact for the seal law (the measured force
+//! in place of F would be off by b²·F, 0.16 % of F at b = 0.04). The bound
+//! b ≤ 0.2 keeps 1 ± b away from 0. The
 //! model's F_model is exactly quadratic in W (the boom's sag grows with the
 //! load, [`crane_model::loads::load_model::Quadratic`]); its slope per kg is close to
 //! constant, and a load for which the slope at W = 0 is not positive, or which
@@ -138,6 +156,10 @@ pub enum Friction {
     },
 }
 
+/// Largest seal-friction share b of the piston force (–): a seal that takes
+/// a fifth of the force is worn out, and 1 ± b stays far from 0.
+pub const MAX_PER_FORCE: f64 = 0.2;
+
 /// What `crane-sim calibrate` learns (and a technician may adjust).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Calibration<T> {
@@ -145,6 +167,11 @@ pub struct Calibration<T> {
     pub friction_up_n: T,
     /// Cylinder friction while luffing down (N, ≥ 0): the force reads this much low.
     pub friction_down_n: T,
+    /// Seal friction while luffing up per newton of piston force (b_up, ≥ 0):
+    /// the friction is `friction_up_n` + b_up·|F|.
+    pub friction_up_per_force: T,
+    /// Seal friction while luffing down per newton of piston force (b_down, ≥ 0).
+    pub friction_down_per_force: T,
     /// Zero-load force offset (N): transducer offsets and model error at W = 0.
     pub force_offset_n: T,
     /// Zero offset of p1 (bar), subtracted before eq. 4.1.
@@ -163,6 +190,8 @@ impl<T: Real> Calibration<T> {
         Self {
             friction_up_n: z,
             friction_down_n: z,
+            friction_up_per_force: z,
+            friction_down_per_force: z,
             force_offset_n: z,
             p1_offset_bar: z,
             p2_offset_bar: z,
@@ -184,27 +213,59 @@ impl<T: Real> Calibration<T> {
         .all(|x| x.is_finite())
             && self.friction_up_n >= T::lit(0.0)
             && self.friction_down_n >= T::lit(0.0)
+            && [self.friction_up_per_force, self.friction_down_per_force]
+                .iter()
+                .all(|b| b.is_finite() && *b >= T::lit(0.0) && *b <= T::lit(MAX_PER_FORCE))
     }
 
-    /// Signed friction (N) in the measured force for a direction of motion.
-    pub fn friction_n(&self, direction: Direction) -> T {
+    /// The friction law (a, b) of a direction of motion (N, –), or `None`
+    /// for `Still`.
+    pub fn law(&self, direction: Direction) -> Option<(T, T)> {
         match direction {
-            Direction::Up => self.friction_up_n,
-            Direction::Down => -self.friction_down_n,
-            Direction::Still => T::lit(0.0),
+            Direction::Up => Some((self.friction_up_n, self.friction_up_per_force)),
+            Direction::Down => Some((self.friction_down_n, self.friction_down_per_force)),
+            Direction::Still => None,
         }
     }
 
-    /// The friction (N) the estimate removes: the sliding friction when
-    /// moving; when still, the last motion's friction times
-    /// `static_share` (1 at the stop, decaying to 0 as the seals release;
-    /// see the module doc), none before any motion.
-    pub fn correction_n(&self, friction: Friction, static_share: T) -> T {
+    /// Signed friction (N) in a measured force `force_n` (offset removed)
+    /// for a direction of motion: the seal law solved for the true force
+    /// (see the module doc), F = (F_meas − s·a)/(1 + s·b).
+    pub fn friction_n(&self, direction: Direction, force_n: T) -> T {
+        let Some((a, b)) = self.law(direction) else {
+            return T::lit(0.0);
+        };
+        let one = T::lit(1.0);
+        let (s, sa) = if direction == Direction::Up {
+            (one, a)
+        } else {
+            (-one, -a)
+        };
+        // The boom hangs on the piston side (F ≥ 0); a force that reads
+        // below the friction itself takes the other branch of |F|.
+        let mut true_force = (force_n - sa) / (one + s * b);
+        if true_force < T::lit(0.0) {
+            true_force = (force_n - sa) / (one - s * b);
+        }
+        let f = force_n - true_force;
+        if f.is_finite() {
+            f
+        } else {
+            sa
+        }
+    }
+
+    /// The friction (N) the estimate removes from the measured force
+    /// `force_n` (offset removed): the sliding friction when moving; when
+    /// still, the last motion's friction times `static_share` (1 at the
+    /// stop, decaying to 0 as the seals release; see the module doc), none
+    /// before any motion.
+    pub fn correction_n(&self, friction: Friction, static_share: T, force_n: T) -> T {
         match friction {
-            Friction::Sliding(d) => self.friction_n(d),
+            Friction::Sliding(d) => self.friction_n(d, force_n),
             Friction::Static {
                 last_moving: Some(d),
-            } => self.friction_n(d) * static_share,
+            } => self.friction_n(d, force_n) * static_share,
             Friction::Static { last_moving: None } => T::lit(0.0),
         }
     }
@@ -282,12 +343,10 @@ pub fn load_equation<T: Real>(
     if !(f.at_zero.is_finite() && inertia.is_finite()) {
         return Err(EstimateError::NotObservable);
     }
+    let force_n = force_n - calibration.force_offset_n;
     Ok((
         f,
-        force_n
-            - inertia
-            - calibration.force_offset_n
-            - calibration.correction_n(friction, static_share),
+        force_n - inertia - calibration.correction_n(friction, static_share, force_n),
     ))
 }
 
@@ -321,18 +380,50 @@ mod tests {
             friction_down_n: 8.0,
             ..Calibration::<f64>::none()
         };
-        let at = |last_moving, share| cal.correction_n(Friction::Static { last_moving }, share);
+        let at = |last_moving, share| {
+            cal.correction_n(Friction::Static { last_moving }, share, 1000.0)
+        };
         assert_eq!(
-            cal.correction_n(Friction::Sliding(Direction::Up), 0.3),
+            cal.correction_n(Friction::Sliding(Direction::Up), 0.3, 1000.0),
             12.0
         );
         assert_eq!(
-            cal.correction_n(Friction::Sliding(Direction::Down), 0.3),
+            cal.correction_n(Friction::Sliding(Direction::Down), 0.3, 1000.0),
             -8.0
         );
         assert_eq!(at(Some(Direction::Up), 1.0), 12.0);
         assert_eq!(at(Some(Direction::Up), 0.5), 6.0);
         assert_eq!(at(Some(Direction::Down), 0.25), -2.0);
         assert_eq!(at(None, 1.0), 0.0);
+    }
+
+    #[test]
+    fn the_seal_law_is_solved_for_the_true_force() {
+        let cal = Calibration {
+            friction_up_n: 5_000.0,
+            friction_down_n: 3_000.0,
+            friction_up_per_force: 0.03,
+            friction_down_per_force: 0.02,
+            ..Calibration::<f64>::none()
+        };
+        // The simulator's law: measured = F ± (a + b·F).
+        for f in [0.0, 50_000.0, 400_000.0] {
+            let up = f + 5_000.0 + 0.03 * f;
+            let down = f - 3_000.0 - 0.02 * f;
+            let fu = cal.friction_n(Direction::Up, up);
+            let fd = cal.friction_n(Direction::Down, down);
+            assert!((up - fu - f).abs() < 1e-6, "up at {f}: {fu}");
+            assert!((down - fd - f).abs() < 1e-6, "down at {f}: {fd}");
+        }
+        // The same in f32 at a heavy load.
+        let c32 = Calibration {
+            friction_up_n: 5_000.0f32,
+            friction_up_per_force: 0.03,
+            ..Calibration::<f32>::none()
+        };
+        let f = 400_000.0f32;
+        let got = c32.friction_n(Direction::Up, f + 5_000.0 + 0.03 * f);
+        assert!((got - 17_000.0).abs() < 1.0, "{got}");
+        assert_eq!(cal.friction_n(Direction::Still, 1e5), 0.0);
     }
 }

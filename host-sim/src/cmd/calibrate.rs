@@ -1,30 +1,38 @@
-//! `crane-sim calibrate UNLOADED.csv... --out CAL.json`
+//! `crane-sim calibrate UNLOADED.csv... [--known-load-kg W LOADED.csv]... --out CAL.json`
 //!
-//! Learns the friction correction from unloaded boom-up and boom-down logs:
-//! each log is run through the limiter's own signal chain (filters, direction
-//! of motion) with no calibration, and
-//! `moment_limiter::calibration::CalibrationLearner` averages the difference
-//! between the measured piston force and the model's force at W = 0, per
-//! direction, over the samples in steady motion (ramps and standstill left
-//! out) (see that module for why the offset/friction split is
-//! symmetric). Samples in which the limiter found a fault are left out and
-//! counted. A log with a `true_load_kg` column that is not 0 is refused.
+//! Learns the cylinder's seal friction law per direction, friction = a +
+//! b·|F|, and the force offset from unloaded boom-up and boom-down logs and,
+//! when given, runs with a known test weight W (SAE J376 calibrates with test
+//! weights): each log is run through the limiter's own signal chain
+//! (filters, direction of motion) with no calibration, and
+//! `moment_limiter::calibration::CalibrationLearner` fits the residual
+//! between the measured piston force and the model's force at the run's
+//! load, per direction, over the samples in steady motion (ramps and
+//! standstill left out), by least squares (see that module for the fit, the
+//! offset at rest and when b is not observable). Samples in which the
+//! limiter found a fault are left out and counted.
+//!
+//! Refused (exit 1, nothing written): a log with p1 below p2 on average
+//! (swapped columns), an "unloaded" log whose `true_load_kg` column is not 0
+//! or whose boom at rest reads a load, too little steady motion in a
+//! direction, a known-load run whose `true_load_kg` column or whose force
+//! disagrees with its stated weight, a law out of the schema's bounds.
 //!
 //! The file is written in the calibration schema
-//! (`moment_limiter::tools::config_file`, version 1) and only if every value is
+//! (`moment_limiter::tools::config_file`, version 2) and only if every value is
 //! within its physical bounds, so the replay and the firmware accept it.
 //!
-//! Exit codes: 0 written; 1 a log could not be read, was not unloaded, had
-//! too few samples moving up or down, or gave values out of bounds.
+//! Exit codes: 0 written; 1 refused (above) or a log could not be read.
 
 use std::fs::File;
 use std::io::{BufReader, Write as _};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use anyhow::Context as _;
 use moment_limiter::calibration::CalibrationLearner;
 use moment_limiter::cycle::{Limiter, LimiterConfig};
 use moment_limiter::fault::Fault;
+use moment_limiter::io::Measurement;
 use moment_limiter::tools::log_format::LogParser;
 
 use moment_limiter::tools::config_file;
@@ -43,6 +51,10 @@ pub struct CalibrateArgs {
     /// Unloaded logs (docs/log-format.md): at least one boom-up and one boom-down run.
     #[arg(required = true)]
     pub logs: Vec<PathBuf>,
+    /// A run with a known test weight on the hook: `--known-load-kg W LOADED.csv`
+    /// (repeatable); its steady samples enter the fit at the model's force for W.
+    #[arg(long, num_args = 2, value_names = ["KG", "LOG"], action = clap::ArgAction::Append)]
+    pub known_load_kg: Vec<String>,
     /// Where to write the calibration (JSON).
     #[arg(long)]
     pub out: PathBuf,
@@ -51,71 +63,139 @@ pub struct CalibrateArgs {
     pub min_samples: u32,
 }
 
-/// Runs the subcommand; returns the exit code.
-pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
-    let mut learner = CalibrationLearner::<f64>::new();
-    for path in &args.logs {
-        let name = path.display();
-        let file = File::open(path).with_context(|| format!("cannot open log {name}"))?;
-        let mut limiter = Limiter::new(crate::model::thesis_model()?, LimiterConfig::standard())
-            .map_err(|e| anyhow::anyhow!("{e}"))?;
-        let mut parser = LogParser::<f64>::new();
-        let mut reader = BufReader::new(file);
-        let mut buf = Vec::new();
-        let mut faulted = 0u32;
-        // Mean pressures of the log: an unloaded boom hangs on the piston
-        // side, so p1 far above p2 (p2 above p1: the columns are swapped).
-        let (mut p1_sum, mut p2_sum, mut n_p) = (0.0f64, 0.0f64, 0u32);
-        loop {
-            let line = match read_line(&mut reader, &mut buf) {
-                Ok(Some(line)) => line,
-                Ok(None) => break,
-                Err(kind) => anyhow::bail!("{name}: {}", parser.reject_next_line(kind)),
-            };
-            let Some(record) = parser
-                .feed_line(&line)
-                .map_err(|e| anyhow::anyhow!("{name}: {e}"))?
-            else {
-                continue;
-            };
-            if let Some(w) = record.true_load_kg {
+/// Largest disagreement of a known-load run with its stated weight: at
+/// rest (seals released, no friction) 5 % of W + 100 kg; in motion
+/// (against the unloaded runs' law, whose b may not be observable) 15 % of
+/// W + 200 kg.
+const KNOWN_AT_REST: (f64, f64) = (0.05, 100.0);
+const KNOWN_IN_MOTION: (f64, f64) = (0.15, 200.0);
+
+/// One log, learned on its own.
+struct Run {
+    name: String,
+    load_kg: f64,
+    learner: CalibrationLearner<f64>,
+    /// The limiter's measurements of the log (for the residual pass).
+    measurements: Vec<Measurement<f64>>,
+}
+
+/// Runs a log through the limiter and its own learner.
+fn learn_log(path: &Path, load_kg: f64) -> anyhow::Result<Run> {
+    let name = path.display().to_string();
+    let file = File::open(path).with_context(|| format!("cannot open log {name}"))?;
+    let mut limiter = Limiter::new(crate::model::thesis_model()?, LimiterConfig::standard())
+        .map_err(|e| anyhow::anyhow!("{e}"))?;
+    let mut learner = CalibrationLearner::<f64>::with_known_load(load_kg);
+    let mut measurements = Vec::new();
+    let mut parser = LogParser::<f64>::new();
+    let mut reader = BufReader::new(file);
+    let mut buf = Vec::new();
+    let mut faulted = 0u32;
+    // Mean pressures of the log: the boom hangs on the piston side, so p1
+    // far above p2 (p2 above p1: the columns are swapped).
+    let (mut p1_sum, mut p2_sum, mut n_p) = (0.0f64, 0.0f64, 0u32);
+    loop {
+        let line = match read_line(&mut reader, &mut buf) {
+            Ok(Some(line)) => line,
+            Ok(None) => break,
+            Err(kind) => anyhow::bail!("{name}: {}", parser.reject_next_line(kind)),
+        };
+        let Some(record) = parser
+            .feed_line(&line)
+            .map_err(|e| anyhow::anyhow!("{name}: {e}"))?
+        else {
+            continue;
+        };
+        if let Some(w) = record.true_load_kg {
+            if load_kg == 0.0 {
                 anyhow::ensure!(
                     w.abs() < 1.0,
-                    "{name}: line {}: true_load_kg is {w}, calibration needs unloaded runs",
+                    "{name}: line {}: true_load_kg is {w}, calibration needs unloaded runs (give a run with a test weight as --known-load-kg W {name})",
+                    record.line
+                );
+            } else {
+                anyhow::ensure!(
+                    (w - load_kg).abs() <= 0.01 * load_kg + 1.0,
+                    "{name}: line {}: true_load_kg is {w}, but --known-load-kg says {load_kg} kg: the run is not of the stated test weight",
                     record.line
                 );
             }
-            p1_sum += record.frame.p1_bar;
-            p2_sum += record.frame.p2_bar;
-            n_p += 1;
-            let report = limiter.step_frame(&record.frame);
-            // An implausibly negative load is the limiter's verdict on an
-            // uncalibrated estimate; the learner needs the measurement itself.
-            match (report.fault, report.measurement) {
-                (None | Some(Fault::ImplausibleLoad), Some(m)) => learner
+        }
+        p1_sum += record.frame.p1_bar;
+        p2_sum += record.frame.p2_bar;
+        n_p += 1;
+        let report = limiter.step_frame(&record.frame);
+        // An implausibly negative load is the limiter's verdict on an
+        // uncalibrated estimate; the learner needs the measurement itself.
+        match (report.fault, report.measurement) {
+            (None | Some(Fault::ImplausibleLoad), Some(m)) => {
+                learner
                     .observe(limiter.model(), &m)
-                    .map_err(|e| anyhow::anyhow!("{name}: line {}: model: {e}", record.line))?,
-                _ => faulted += 1,
+                    .map_err(|e| anyhow::anyhow!("{name}: line {}: model: {e}", record.line))?;
+                measurements.push(m);
             }
+            _ => faulted += 1,
         }
-        parser
-            .finish()
-            .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
-        if n_p > 0 {
-            let (p1, p2) = (p1_sum / f64::from(n_p), p2_sum / f64::from(n_p));
+    }
+    parser
+        .finish()
+        .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
+    if n_p > 0 {
+        let (p1, p2) = (p1_sum / f64::from(n_p), p2_sum / f64::from(n_p));
+        anyhow::ensure!(
+            p1 > p2,
+            "{name}: p1 (piston side) reads {p1:.1} bar on average and p2 (rod side) {p2:.1} bar: the boom hangs on the piston side, so p1_bar and p2_bar look swapped (check the wiring or the log's columns)"
+        );
+    }
+    learner.end_of_log();
+    if faulted > 0 {
+        eprintln!("warning: {name}: {faulted} samples with a sensor or model fault left out");
+    }
+    Ok(Run {
+        name,
+        load_kg,
+        learner,
+        measurements,
+    })
+}
+
+/// The known-load pairs of the command line.
+fn known_loads(args: &CalibrateArgs) -> anyhow::Result<Vec<(f64, PathBuf)>> {
+    args.known_load_kg
+        .chunks(2)
+        .map(|pair| {
+            let [kg, log] = pair else {
+                anyhow::bail!("--known-load-kg needs a weight and a log: --known-load-kg W LOADED.csv");
+            };
+            let w: f64 = kg.trim().parse().map_err(|_| {
+                anyhow::anyhow!("--known-load-kg {kg} {log}: `{kg}` is not a weight in kg")
+            })?;
             anyhow::ensure!(
-                p1 > p2,
-                "{name}: p1 (piston side) reads {p1:.1} bar on average and p2 (rod side) {p2:.1} bar: the boom hangs on the piston side, so p1_bar and p2_bar look swapped (check the wiring or the log's columns)"
+                w.is_finite() && (1.0..=50_000.0).contains(&w),
+                "--known-load-kg {kg} {log}: the test weight must be between 1 and 50000 kg"
             );
-        }
-        learner.end_of_log();
-        if faulted > 0 {
-            eprintln!("warning: {name}: {faulted} samples with a sensor or model fault left out");
-        }
+            Ok((w, PathBuf::from(log)))
+        })
+        .collect()
+}
+
+/// Runs the subcommand; returns the exit code.
+pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
+    let known = known_loads(&args)?;
+    let mut runs = Vec::new();
+    for path in &args.logs {
+        runs.push(learn_log(path, 0.0)?);
+    }
+    for (w, path) in &known {
+        runs.push(learn_log(path, *w)?);
+    }
+    let mut unloaded = CalibrationLearner::<f64>::new();
+    for r in runs.iter().filter(|r| r.load_kg == 0.0) {
+        unloaded.merge(&r.learner);
     }
     // A load on the hook reads as a large force at rest: refuse it before
     // it becomes an offset.
-    if let (Some(rest), Some(kg)) = (learner.mean_rest_residual_n(), learner.rest_load_kg()) {
+    if let (Some(rest), Some(kg)) = (unloaded.mean_rest_residual_n(), unloaded.rest_load_kg()) {
         anyhow::ensure!(
             rest.abs() <= REST_RESIDUAL_LIMIT_N,
             "the boom at rest reads {:.1} kN above the empty crane's model (about {kg:.0} kg on the hook; at most {:.0} kN of offset is plausible): calibration needs runs with an empty hook",
@@ -123,14 +203,62 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
             REST_RESIDUAL_LIMIT_N / 1e3
         );
     }
-    let cal = learner
-        .finish(args.min_samples)
-        .map_err(|e| anyhow::anyhow!("{e}; each direction needs at least {} samples of steady luffing (1.5 s after the start, ≥ 0.5 °/s)", args.min_samples))?;
-    let (samples_up, samples_down) = learner.counts();
+    let min = args.min_samples;
+    let too_few = |e| {
+        anyhow::anyhow!("{e}; each direction needs at least {min} samples of steady luffing (1.5 s after the start, ≥ 0.5 °/s)")
+    };
+    let base = unloaded.fit(min).map_err(too_few)?;
+    // Each known-load run against the unloaded runs: at rest the seals
+    // release and the force is the load's alone; in motion, the unloaded law.
+    let mut all = unloaded.clone();
+    for r in runs.iter().filter(|r| r.load_kg > 0.0) {
+        let l = &r.learner;
+        let w = r.load_kg;
+        let offset = base.calibration.force_offset_n;
+        let (what, err_kg, (share, floor)) = match (l.rest_count() >= min, l.rest_load_kg(), l.mean_rest_residual_n()) {
+            (true, Some(kg), Some(res)) if res != 0.0 => {
+                // rest_load_kg = res/per_kg: the offset's share taken out.
+                ("at rest", kg * (res - offset) / res, KNOWN_AT_REST)
+            }
+            _ => {
+                let per_kg = l.steady_per_kg().filter(|p| *p > 0.0);
+                let res = l.mean_law_residual_n(&base.calibration);
+                let (Some(per_kg), Some(res)) = (per_kg, res) else {
+                    anyhow::bail!("{}: the run with --known-load-kg {w} has neither {min} samples at rest nor steady motion: it cannot be checked against its weight", r.name);
+                };
+                ("in steady motion", res / per_kg, KNOWN_IN_MOTION)
+            }
+        };
+        let limit = share * w + floor;
+        anyhow::ensure!(
+            err_kg.abs() <= limit,
+            "{}: the run said to carry {w:.0} kg reads {:.0} kg {what} against the unloaded runs (off by {err_kg:+.0} kg, more than the {limit:.0} kg a calibration tolerates): check the test weight, its rigging (hook block, slings) and that the log is of this crane",
+            r.name,
+            w + err_kg
+        );
+        all.merge(l);
+    }
+    let learned = all.fit(min).map_err(too_few)?;
+    let cal = learned.calibration;
+    let (samples_up, samples_down) = all.counts();
     // Only a file the reader (host and firmware) accepts is written.
     config_file::check_calibration(&cal).map_err(|e| {
-        anyhow::anyhow!("the learned calibration is implausible, not written: {e}; check that the logs are unloaded runs of this crane")
+        anyhow::anyhow!("the learned calibration is implausible, not written: {e}; check that the logs are runs of this crane (unloaded, or of the stated test weight)")
     })?;
+    // The residual pass: the largest |residual| of the law, per direction.
+    let model = crate::model::thesis_model()?;
+    let mut max = (0.0f64, 0.0f64);
+    for r in &runs {
+        let mut check = CalibrationLearner::checking(cal, r.load_kg);
+        for m in &r.measurements {
+            check
+                .observe(&model, m)
+                .map_err(|e| anyhow::anyhow!("{}: model: {e}", r.name))?;
+        }
+        check.end_of_log();
+        let (u, d) = check.max_residual_n();
+        max = (max.0.max(u), max.1.max(d));
+    }
     let mut json = String::new();
     config_file::write_calibration_json(&mut json, &cal)?;
     std::fs::write(&args.out, json)
@@ -138,11 +266,47 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
     let mut out = crate::stdout::stdout();
     writeln!(
         out,
-        "friction_up_n={:.1} friction_down_n={:.1} force_offset_n={:.1} samples_up={samples_up} samples_down={samples_down} -> {}",
+        "friction_up_n={:.1} friction_up_per_force={:.5} friction_down_n={:.1} friction_down_per_force={:.5} force_offset_n={:.1} samples_up={samples_up} samples_down={samples_down} -> {}",
         cal.friction_up_n,
+        cal.friction_up_per_force,
         cal.friction_down_n,
+        cal.friction_down_per_force,
         cal.force_offset_n,
         args.out.display()
+    )?;
+    let runs_text = if known.is_empty() {
+        format!("{} unloaded run(s)", args.logs.len())
+    } else {
+        let w: Vec<String> = known.iter().map(|(w, _)| format!("{w:.0}")).collect();
+        format!("{} unloaded run(s) and test weights {} kg", args.logs.len(), w.join(", "))
+    };
+    writeln!(out, "fit over {runs_text}: friction = a + b*|F| per direction")?;
+    for (dir, f, mx) in [("up", learned.up, max.0), ("down", learned.down, max.1)] {
+        let b_note = if f.slope_observable {
+            format!("b learned (slope {:.5} +- {:.5})", f.raw_b, f.b_se)
+        } else {
+            format!(
+                "b NOT observable (force spread {:.1} kN of {:.1} kN, slope {:.5} +- {:.5}): b = 0; add a --known-load-kg run",
+                f.force_sd_n / 1e3,
+                f.force_mean_n / 1e3,
+                f.raw_b,
+                f.b_se
+            )
+        };
+        writeln!(
+            out,
+            "  {dir:<4} a={:.1} N b={:.5} samples={} residual rms={:.1} N max={:.1} N; {b_note}",
+            f.a_n, f.b, f.n, f.rms_n, mx
+        )?;
+    }
+    writeln!(
+        out,
+        "learned: friction law per direction, force offset ({}); not observable, left 0: p1/p2 zero offsets (a common offset is the force offset), pendulum offset, pendulum lag (not learned: the steady samples do not show it)",
+        if learned.offset_from_rest {
+            "from the boom at rest"
+        } else {
+            "no rest samples: symmetric split of up and down"
+        }
     )?;
     out.flush()?;
     Ok(0)

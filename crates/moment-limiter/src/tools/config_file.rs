@@ -2,7 +2,7 @@
 //! writer, `no_std` and without a heap, shared by `crane-sim` and the
 //! firmware (SPEC §4.9) so the two cannot disagree about a file.
 //!
-//! ## Schema, version 1
+//! ## Schema, version 2 (version 1 still read)
 //!
 //! One JSON object; **every key is required, no other key is allowed**, each
 //! value is a JSON number within the bounds below (finite; the bounds are
@@ -11,13 +11,21 @@
 //!
 //! | key | unit | bounds | why |
 //! |---|---|---|---|
-//! | `version` | — | 1 | the schema version this reader knows |
-//! | `friction_up_n` | N | 0 … 40 000 | cylinder seal friction luffing up: ≤ 5 % of the 831 kN the cylinder exerts at 200 bar |
+//! | `version` | — | 2 (or 1) | the schema version of the file |
+//! | `friction_up_n` | N | 0 … 40 000 | constant part a of the cylinder's seal friction luffing up: ≤ 5 % of the 831 kN the cylinder exerts at 200 bar |
 //! | `friction_down_n` | N | 0 … 40 000 | the same, luffing down |
 //! | `force_offset_n` | N | −25 000 … 25 000 | zero-load force offset: ≤ 3 % of 831 kN (both transducers' ±2 % zero tolerance, 16.6 kN, plus the model's error at W = 0) |
 //! | `p1_offset_bar` | bar | −4 … 4 | zero of the piston-side transducer: ±2 % of its 200 bar span (beyond it the range check already calls the sensor faulty) |
 //! | `p2_offset_bar` | bar | −4 … 4 | the same, rod side |
 //! | `angle_offset_deg` | ° | −5 … 5 | zero of the pendulum: the 5° margin of its −5°…95° range |
+//! | `friction_up_per_force` | — | 0 … 0.2 | pressure-proportional part b of the seal friction luffing up (friction = a + b·\|F\|, [`crate::load_estimate`]): a seal taking a fifth of the force is worn out |
+//! | `friction_down_per_force` | — | 0 … 0.2 | the same, luffing down |
+//!
+//! **Version 1** files (written before the seal law) have the first six
+//! keys only and read as b = 0 (constant friction per direction), exactly
+//! as they were applied before; a version-1 file that holds a `*_per_force`
+//! key is refused (that key is not in version 1). The writer writes
+//! version 2.
 //!
 //! A file is refused with an error that names the key and, for a value out
 //! of bounds, the bound and its reason: an empty object, an array, a value of
@@ -40,8 +48,16 @@ use crane_model::Real;
 
 use crate::load_estimate::Calibration;
 
-/// The schema version this reader knows and the writer writes.
-pub const CALIBRATION_VERSION: u32 = 1;
+/// The schema version the writer writes (the reader also reads
+/// [`CALIBRATION_VERSION_1`]).
+pub const CALIBRATION_VERSION: u32 = 2;
+
+/// The first schema version: constant friction per direction (the first
+/// [`V1_KEYS`] keys of [`CALIBRATION_KEYS`]).
+pub const CALIBRATION_VERSION_1: u32 = 1;
+
+/// Number of keys of schema version 1 (the first ones of [`CALIBRATION_KEYS`]).
+pub const V1_KEYS: usize = 6;
 
 /// Deepest nesting of arrays and objects skipped inside a value.
 pub const MAX_DEPTH: usize = 8;
@@ -64,9 +80,9 @@ pub struct KeySpec {
     pub why: &'static str,
 }
 
-/// The values of schema version 1, in the order of
-/// [`Calibration`]'s fields (see the module doc for the reasons).
-pub const CALIBRATION_KEYS: [KeySpec; 6] = [
+/// The values of schema version 2 (the first [`V1_KEYS`] are version 1's,
+/// in its order; see the module doc for the reasons).
+pub const CALIBRATION_KEYS: [KeySpec; 8] = [
     KeySpec {
         key: "friction_up_n",
         unit: "N",
@@ -109,6 +125,20 @@ pub const CALIBRATION_KEYS: [KeySpec; 6] = [
         max: 5.0,
         why: "the pendulum's 5 degree range margin",
     },
+    KeySpec {
+        key: "friction_up_per_force",
+        unit: "N/N",
+        min: 0.0,
+        max: crate::load_estimate::MAX_PER_FORCE,
+        why: "a seal taking a fifth of the piston force is worn out",
+    },
+    KeySpec {
+        key: "friction_down_per_force",
+        unit: "N/N",
+        min: 0.0,
+        max: crate::load_estimate::MAX_PER_FORCE,
+        why: "a seal taking a fifth of the piston force is worn out",
+    },
 ];
 
 /// Longest unknown key kept for the error message (longer ones are cut).
@@ -130,6 +160,8 @@ pub enum CalibrationFileError {
     MissingKey(&'static str),
     /// A key the schema does not have (cut to [`KEY_ECHO_LEN`] bytes).
     UnknownKey(heapless::String<KEY_ECHO_LEN>),
+    /// A key of version 2 in a file that says version 1.
+    NotInVersion1(&'static str),
     /// A key is given twice.
     DuplicateKey(&'static str),
     /// The value of this key is not a JSON number.
@@ -155,6 +187,11 @@ impl fmt::Display for CalibrationFileError {
             E::NotAnObject => f.write_str("expected one JSON object `{...}` of calibration keys"),
             E::MissingKey(k) => write!(f, "key `{k}` is missing (every key is required)"),
             E::UnknownKey(k) => write!(f, "key `{k}` is not in the calibration schema"),
+            E::NotInVersion1(k) => write!(
+                f,
+                "key `{k}` is not in calibration schema version 1: set \"{VERSION_KEY}\": \
+                 {CALIBRATION_VERSION} (and give every key of version {CALIBRATION_VERSION})"
+            ),
             E::DuplicateKey(k) => write!(f, "key `{k}` is given twice"),
             E::NotANumber(k) => write!(f, "key `{k}` must be a number"),
             E::OutOfBounds { spec, value } => write!(
@@ -164,31 +201,40 @@ impl fmt::Display for CalibrationFileError {
             ),
             E::UnsupportedVersion(v) => write!(
                 f,
-                "key `{VERSION_KEY}` = {v}: this reader knows version {CALIBRATION_VERSION} only"
+                "key `{VERSION_KEY}` = {v}: this reader knows versions \
+                 {CALIBRATION_VERSION_1} and {CALIBRATION_VERSION}"
             ),
             E::PreSchemaFile => write!(
                 f,
                 "key `{VERSION_KEY}` is missing: the file predates calibration schema \
-                 {CALIBRATION_VERSION}; run `crane-sim calibrate` again, or check the values, \
-                 add \"{VERSION_KEY}\": {CALIBRATION_VERSION} and remove the keys the schema \
+                 {CALIBRATION_VERSION_1}; run `crane-sim calibrate` again, or check the values, \
+                 add \"{VERSION_KEY}\": {CALIBRATION_VERSION_1} and remove the keys the schema \
                  does not have"
             ),
         }
     }
 }
 
-/// Reads a calibration file (the bytes of `CAL.json`) against the schema.
+/// Reads a calibration file (the bytes of `CAL.json`) against the schema
+/// (version 2, or version 1 read as b = 0).
 pub fn parse_calibration<T: Real>(text: &[u8]) -> Result<Calibration<T>, CalibrationFileError> {
-    let values = read_object(text)?;
-    let [fu, fd, fo, p1, p2, a] = values;
-    Ok(Calibration {
+    read_object(text).map(|v| calibration_from_values(&v))
+}
+
+/// The calibration of the values of [`CALIBRATION_KEYS`], in its order
+/// (checked by the caller), converted to `T`.
+pub fn calibration_from_values<T: Real>(values: &[f64; 8]) -> Calibration<T> {
+    let [fu, fd, fo, p1, p2, a, bu, bd] = *values;
+    Calibration {
         friction_up_n: T::lit(fu),
         friction_down_n: T::lit(fd),
+        friction_up_per_force: T::lit(bu),
+        friction_down_per_force: T::lit(bd),
         force_offset_n: T::lit(fo),
         p1_offset_bar: T::lit(p1),
         p2_offset_bar: T::lit(p2),
         angle_offset_deg: T::lit(a),
-    })
+    }
 }
 
 /// Checks a calibration against the schema's bounds (what the reader
@@ -201,7 +247,7 @@ pub fn check_calibration(cal: &Calibration<f64>) -> Result<(), CalibrationFileEr
     Ok(())
 }
 
-/// Writes `cal` as a schema-version-1 file (one key per line, trailing
+/// Writes `cal` as a schema-version-2 file (one key per line, trailing
 /// newline). Call [`check_calibration`] first: this writes any value.
 pub fn write_calibration_json<W: Write>(w: &mut W, cal: &Calibration<f64>) -> fmt::Result {
     write!(w, "{{\n  \"{VERSION_KEY}\": {CALIBRATION_VERSION}")?;
@@ -213,7 +259,8 @@ pub fn write_calibration_json<W: Write>(w: &mut W, cal: &Calibration<f64>) -> fm
     w.write_str("\n}\n")
 }
 
-fn calibration_values(cal: &Calibration<f64>) -> [f64; 6] {
+/// The values of `cal` in the order of [`CALIBRATION_KEYS`].
+pub fn calibration_values(cal: &Calibration<f64>) -> [f64; 8] {
     [
         cal.friction_up_n,
         cal.friction_down_n,
@@ -221,6 +268,8 @@ fn calibration_values(cal: &Calibration<f64>) -> [f64; 6] {
         cal.p1_offset_bar,
         cal.p2_offset_bar,
         cal.angle_offset_deg,
+        cal.friction_up_per_force,
+        cal.friction_down_per_force,
     ]
 }
 
@@ -247,10 +296,10 @@ struct Findings {
     version_error: Option<CalibrationFileError>,
     unknown: Option<CalibrationFileError>,
     value_error: Option<CalibrationFileError>,
-    values: [Option<f64>; 6],
+    values: [Option<f64>; 8],
 }
 
-fn read_object(text: &[u8]) -> Result<[f64; 6], CalibrationFileError> {
+fn read_object(text: &[u8]) -> Result<[f64; 8], CalibrationFileError> {
     let mut c = Cursor {
         s: text.strip_prefix("\u{feff}".as_bytes()).unwrap_or(text),
         i: 0,
@@ -304,7 +353,7 @@ impl Findings {
                 }
             };
             self.version = Some(v);
-            if v == f64::from(CALIBRATION_VERSION) {
+            if v == f64::from(CALIBRATION_VERSION) || v == f64::from(CALIBRATION_VERSION_1) {
                 return Ok(());
             }
             if !v.is_nan() {
@@ -346,21 +395,43 @@ impl Findings {
         Ok(())
     }
 
-    fn finish(self) -> Result<[f64; 6], CalibrationFileError> {
+    fn finish(self) -> Result<[f64; 8], CalibrationFileError> {
         use CalibrationFileError as E;
-        if self.version.is_none() {
+        let Some(version) = self.version else {
             return Err(if self.values.iter().any(Option::is_some) {
                 E::PreSchemaFile
             } else {
                 E::MissingKey(VERSION_KEY)
             });
-        }
-        if let Some(e) = self.version_error.or(self.unknown).or(self.value_error) {
+        };
+        if let Some(e) = self.version_error.or(self.unknown) {
             return Err(e);
         }
-        let mut out = [0.0; 6];
-        for ((o, v), spec) in out.iter_mut().zip(self.values).zip(CALIBRATION_KEYS.iter()) {
-            *o = v.ok_or(E::MissingKey(spec.key))?;
+        let v1 = version == f64::from(CALIBRATION_VERSION_1);
+        if v1 {
+            // The keys version 1 did not have are not in a version-1 file.
+            for (v, spec) in self.values.iter().zip(CALIBRATION_KEYS.iter()).skip(V1_KEYS) {
+                if v.is_some() {
+                    return Err(E::NotInVersion1(spec.key));
+                }
+            }
+        }
+        if let Some(e) = self.value_error {
+            return Err(e);
+        }
+        let mut out = [0.0; 8];
+        for (k, ((o, v), spec)) in out
+            .iter_mut()
+            .zip(self.values)
+            .zip(CALIBRATION_KEYS.iter())
+            .enumerate()
+        {
+            *o = match v {
+                Some(v) => v,
+                // Version 1: constant friction, b = 0.
+                None if v1 && k >= V1_KEYS => 0.0,
+                None => return Err(E::MissingKey(spec.key)),
+            };
         }
         Ok(out)
     }
@@ -519,8 +590,14 @@ impl<'a> Cursor<'a> {
 pub mod hostile {
     use super::CALIBRATION_KEYS;
 
-    /// A valid file of schema version 1 (the base the hostile cases alter).
-    pub const GOOD: &str = r#"{"version": 1, "friction_up_n": 10011.5, "friction_down_n": 9000,
+    /// A valid file of schema version 2 (the base the hostile cases alter).
+    pub const GOOD: &str = r#"{"version": 2, "friction_up_n": 10011.5, "friction_down_n": 9000,
+        "force_offset_n": -1932.4, "p1_offset_bar": 0.5, "p2_offset_bar": -0.25,
+        "angle_offset_deg": 0.0, "friction_up_per_force": 0.025,
+        "friction_down_per_force": 0.0125}"#;
+
+    /// A valid file of schema version 1 (constant friction; read as b = 0).
+    pub const GOOD_V1: &str = r#"{"version": 1, "friction_up_n": 10011.5, "friction_down_n": 9000,
         "force_offset_n": -1932.4, "p1_offset_bar": 0.5, "p2_offset_bar": -0.25,
         "angle_offset_deg": 0.0}"#;
 
@@ -563,9 +640,19 @@ pub mod hostile {
                 "`p1_offset_bar` is given twice",
             ),
             (
-                "version 2".into(),
-                with("version", Some("2")),
-                "`version` = 2: this reader knows version 1",
+                "version 3".into(),
+                with("version", Some("3")),
+                "`version` = 3: this reader knows versions 1 and 2",
+            ),
+            (
+                "version 1 with a seal-law key".into(),
+                with("version", Some("1")),
+                "`friction_up_per_force` is not in calibration schema version 1",
+            ),
+            (
+                "version 1 without version 1's keys".into(),
+                GOOD_V1.replace("\"p2_offset_bar\": -0.25,", ""),
+                "`p2_offset_bar` is missing",
             ),
             (
                 "version as a string".into(),
@@ -620,7 +707,8 @@ mod tests {
         let mut text = String::new();
         write_calibration_json(&mut text, &c).unwrap();
         assert_eq!(parse_calibration::<f64>(text.as_bytes()).unwrap(), c);
-        assert!(text.starts_with("{\n  \"version\": 1,\n"), "{text}");
+        assert!(text.starts_with("{\n  \"version\": 2,\n"), "{text}");
+        assert_eq!(c.friction_up_per_force, 0.025);
         // BOM and f32.
         let bom = format!("\u{feff}{GOOD}");
         let c32 = parse_calibration::<f32>(bom.as_bytes()).unwrap();
@@ -645,7 +733,29 @@ mod tests {
     }
 
     #[test]
-    fn the_shipped_example_is_schema_1() {
+    fn a_version_1_file_reads_as_constant_friction() {
+        use super::hostile::GOOD_V1;
+        let c1 = parse_calibration::<f64>(GOOD_V1.as_bytes()).unwrap();
+        let c2 = parse_calibration::<f64>(GOOD.as_bytes()).unwrap();
+        assert_eq!(c1.friction_up_per_force, 0.0);
+        assert_eq!(c1.friction_down_per_force, 0.0);
+        assert_eq!(
+            c1,
+            Calibration {
+                friction_up_per_force: 0.0,
+                friction_down_per_force: 0.0,
+                ..c2
+            }
+        );
+        // Re-written, it is a version-2 file with b = 0.
+        let mut text = String::new();
+        write_calibration_json(&mut text, &c1).unwrap();
+        assert!(text.contains("\"friction_up_per_force\": 0.0"), "{text}");
+        assert_eq!(parse_calibration::<f64>(text.as_bytes()).unwrap(), c1);
+    }
+
+    #[test]
+    fn the_shipped_example_reads() {
         let text = include_str!("../../../../examples/logs/cal.json");
         let c = parse_calibration::<f64>(text.as_bytes()).unwrap();
         assert!(check_calibration(&c).is_ok());
