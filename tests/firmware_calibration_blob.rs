@@ -177,10 +177,10 @@ fn refused_calibration_files_and_blobs_exit_1_naming_the_reason() {
     };
     let mut flipped = good.clone();
     flipped[20] ^= 0x04;
-    let mut schema2 = good.clone();
-    schema2[6] = 2;
-    let mut format2 = good.clone();
-    format2[4..6].copy_from_slice(&(BLOB_FORMAT + 1).to_le_bytes());
+    let mut schema3 = good.clone();
+    schema3[6] = 3;
+    let mut format3 = good.clone();
+    format3[4..6].copy_from_slice(&(BLOB_FORMAT + 1).to_le_bytes());
     let mut p1_50 = good.clone();
     p1_50[8 + 3 * 8..8 + 4 * 8].copy_from_slice(&50.0f64.to_le_bytes());
     let mut nan = good.clone();
@@ -192,9 +192,9 @@ fn refused_calibration_files_and_blobs_exit_1_naming_the_reason() {
         (
             "truncated",
             good[..BLOB_LEN - 1].to_vec(),
-            "wrong length (59 bytes",
+            "wrong length (75 bytes",
         ),
-        ("one byte long", long, "wrong length (61 bytes"),
+        ("one byte long", long, "wrong length (77 bytes"),
         ("empty", Vec::new(), "wrong length (0 bytes"),
         (
             "erased flash",
@@ -207,14 +207,14 @@ fn refused_calibration_files_and_blobs_exit_1_naming_the_reason() {
             "wrong length",
         ),
         (
-            "schema version 2",
-            with_crc(schema2),
-            "unknown calibration schema version 2",
+            "schema version 3",
+            with_crc(schema3),
+            "unknown calibration schema version 3",
         ),
         (
-            "format 2",
-            with_crc(format2),
-            "unknown calibration blob format 2",
+            "format 3",
+            with_crc(format3),
+            "unknown calibration blob format 3",
         ),
         (
             "p1_offset_bar = 50",

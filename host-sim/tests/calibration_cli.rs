@@ -110,3 +110,154 @@ fn refuses_swapped_pressures_a_load_and_a_missing_direction() {
     assert!(err.contains("too few samples moving down"), "{err}");
     assert!(!cal.exists(), "nothing is written when refused");
 }
+
+/// A run of the seal-friction crane below (a_up = 5 kN, b_up = 0.03; a_down
+/// = 3 kN, b_down = 0.02), thesis rope, with `load` kg, 1 s at rest first.
+fn seal_run(dir: &Path, direction: &str, load: &str, duration: &str, seed: &str) -> PathBuf {
+    let log = dir.join(format!("seal_{direction}_{load}.csv"));
+    let out = bin()
+        .args(["synth", "--load-kg", load, "--duration", duration, "--profile", "cycloidal", "--rate-hz", "100", "--hold-s", "1"])
+        .args(["--direction", direction, "--seed", seed])
+        .args(["--friction-law", "seal", "--friction-up-n", "5000", "--friction-up-b", "0.03"])
+        .args(["--friction-down-n", "3000", "--friction-down-b", "0.02"])
+        .arg("--out")
+        .arg(&log)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    log
+}
+
+/// The learned friction's error (N) at piston force `f` per direction
+/// against the synthesized law.
+fn law_errors(j: &serde_json::Value, f: f64) -> (f64, f64) {
+    let up = key(j, "friction_up_n") + key(j, "friction_up_per_force") * f - (5_000.0 + 0.03 * f);
+    let down = key(j, "friction_down_n") + key(j, "friction_down_per_force") * f - (3_000.0 + 0.02 * f);
+    (up, down)
+}
+
+#[test]
+fn learns_the_seal_law_from_unloaded_runs_and_better_with_a_test_weight() {
+    let dir = tempfile::tempdir().unwrap();
+    let (up, down) = (seal_run(dir.path(), "up", "0", "10", "1"), seal_run(dir.path(), "down", "0", "10", "2"));
+    let cal = dir.path().join("cal.json");
+    let out = calibrate(&[&up, &down], &cal);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let stdout = text(&out.stdout);
+    println!("{stdout}");
+    // The fit's residuals per direction and what was not learned are printed.
+    assert!(stdout.contains("up   a=") && stdout.contains("down a=") && stdout.contains("residual rms="), "{stdout}");
+    assert!(stdout.contains("not observable") && stdout.contains("pendulum"), "{stdout}");
+    let j: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&cal).unwrap()).unwrap();
+    assert_eq!(j["version"], 2);
+    // A constant law learned unloaded (≈ 87 kN) is off at a heavy lift's
+    // 300 kN by b·213 kN: 6.4 kN up, 4.3 kN down.
+    let (bu, bd) = (key(&j, "friction_up_per_force"), key(&j, "friction_down_per_force"));
+    println!("unloaded: b up {bu:.4} (0.03), down {bd:.4} (0.02)");
+    assert!((bu - 0.03).abs() < 0.008, "b up {bu}");
+    assert!(bd > 0.0 && bd < 0.03, "b down {bd}");
+    let (eu, ed) = law_errors(&j, 300_000.0);
+    println!("unloaded: friction error at 300 kN up {eu:+.0} N, down {ed:+.0} N");
+    assert!(eu.abs() < 2_000.0, "up {eu}");
+    assert!(ed.abs() < 4_000.0, "down {ed}");
+    let (e0u, e0d) = law_errors(&j, 87_000.0);
+    assert!(e0u.abs() < 1_000.0 && e0d.abs() < 1_000.0, "at the unloaded force: {e0u} {e0d}");
+
+    // With a 3 t test weight raised and lowered slowly (30 s).
+    let (ku, kd) = (seal_run(dir.path(), "up", "3000", "30", "11"), seal_run(dir.path(), "down", "3000", "30", "12"));
+    let cal2 = dir.path().join("cal2.json");
+    let out = bin()
+        .arg("calibrate")
+        .args([&up, &down])
+        .arg("--known-load-kg")
+        .arg("3000")
+        .arg(&ku)
+        .arg("--known-load-kg")
+        .arg("3000")
+        .arg(&kd)
+        .arg("--out")
+        .arg(&cal2)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    println!("{}", text(&out.stdout));
+    let j2: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&cal2).unwrap()).unwrap();
+    let (ku_, kd_) = law_errors(&j2, 300_000.0);
+    println!("with 3 t: friction error at 300 kN up {ku_:+.0} N, down {kd_:+.0} N");
+    assert!(ku_.abs() < 1_000.0 && kd_.abs() < 1_000.0, "{ku_} {kd_}");
+    assert!(kd_.abs() < ed.abs(), "the test weight did not improve the down law: {kd_} vs {ed}");
+    let bd2 = key(&j2, "friction_down_per_force");
+    assert!((bd2 - 0.02).abs() < (bd - 0.02).abs(), "b down {bd2} (unloaded {bd})");
+}
+
+#[test]
+fn refuses_a_known_load_run_that_is_not_of_its_stated_weight() {
+    let dir = tempfile::tempdir().unwrap();
+    let (up, down) = (seal_run(dir.path(), "up", "0", "10", "1"), seal_run(dir.path(), "down", "0", "10", "2"));
+    let loaded = seal_run(dir.path(), "up", "2000", "30", "11");
+    let cal = dir.path().join("cal.json");
+    let with_known = |kg: &str, log: &Path| {
+        bin().arg("calibrate").args([&up, &down]).args(["--known-load-kg", kg]).arg(log).arg("--out").arg(&cal).output().unwrap()
+    };
+    // Its true-load column says 2000 kg, not 3000.
+    let out = with_known("3000", &loaded);
+    assert_eq!(out.status.code(), Some(1));
+    let err = text(&out.stderr);
+    assert!(err.contains("true_load_kg is 2000") && err.contains("3000"), "{err}");
+    // Without the column (a recorder without it), the force tells.
+    let blank = dir.path().join("blank.csv");
+    let body: String = std::fs::read_to_string(&loaded)
+        .unwrap()
+        .lines()
+        .map(|l| {
+            let f: Vec<&str> = l.split(',').collect();
+            if l.starts_with('#') || f[0] == "t_s" {
+                format!("{}\n", if f[0] == "t_s" { "t_s,p1_bar,p2_bar,boom_angle_deg" } else { l })
+            } else {
+                format!("{}\n", f[..4].join(","))
+            }
+        })
+        .collect();
+    std::fs::write(&blank, body).unwrap();
+    let out = with_known("3000", &blank);
+    assert_eq!(out.status.code(), Some(1));
+    let err = text(&out.stderr);
+    assert!(err.contains("said to carry 3000 kg") && err.contains("check the test weight"), "{err}");
+    assert!(!cal.exists(), "nothing is written when refused");
+    // Its true weight is accepted.
+    let out = with_known("2000", &blank);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    // A weight that is no number is a usage error, exit 1.
+    let out = with_known("heavy", &blank);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(text(&out.stderr).contains("is not a weight in kg"), "{}", text(&out.stderr));
+}
+
+#[test]
+fn a_version_1_calibration_file_still_replays_as_constant_friction() {
+    let dir = tempfile::tempdir().unwrap();
+    let (up, down) = (unloaded(dir.path(), "up", &[]), unloaded(dir.path(), "down", &[]));
+    let cal = dir.path().join("cal.json");
+    assert_eq!(calibrate(&[&up, &down], &cal).status.code(), Some(0));
+    let j: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&cal).unwrap()).unwrap();
+    // The same values as a version-1 file (b = 0; the constant crane's b is small).
+    let v1 = dir.path().join("v1.json");
+    let v1_b0 = dir.path().join("v2_b0.json");
+    let keys = ["friction_up_n", "friction_down_n", "force_offset_n", "p1_offset_bar", "p2_offset_bar", "angle_offset_deg"];
+    let members: Vec<String> = keys.iter().map(|k| format!("\"{k}\": {}", j[k])).collect();
+    std::fs::write(&v1, format!("{{\"version\": 1, {}}}", members.join(", "))).unwrap();
+    std::fs::write(
+        &v1_b0,
+        format!("{{\"version\": 2, {}, \"friction_up_per_force\": 0, \"friction_down_per_force\": 0}}", members.join(", ")),
+    )
+    .unwrap();
+    let replay = |c: &Path| bin().arg("replay").arg(&up).arg("--calibration").arg(c).arg("--json").output().unwrap();
+    let (r1, r2) = (replay(&v1), replay(&v1_b0));
+    assert_eq!(r1.status.code(), Some(0), "{}", text(&r1.stderr));
+    assert_eq!(text(&r1.stdout), text(&r2.stdout), "a v1 file is the v2 file with b = 0");
+    // A v1 file with a v2 key gets a clear message.
+    std::fs::write(&v1, format!("{{\"version\": 1, {}, \"friction_up_per_force\": 0}}", members.join(", "))).unwrap();
+    let r = replay(&v1);
+    assert_eq!(r.status.code(), Some(1));
+    assert!(text(&r.stderr).contains("not in calibration schema version 1"), "{}", text(&r.stderr));
+}

@@ -8,18 +8,19 @@ mod common;
 use common::{layout, CutFlash};
 use limiter_storage::calibration_blob::{
     decode_calibration, encode_calibration, load_calibration, CalibrationBlobError, BLOB_FORMAT,
-    BLOB_LEN, BLOB_MAGIC,
+    BLOB_FORMAT_1, BLOB_LEN, BLOB_LEN_1, BLOB_MAGIC,
 };
 use limiter_storage::crc::crc32;
 use limiter_storage::store::{Key, Store};
 use moment_limiter::tools::config_file::{
-    hostile, parse_calibration, CalibrationFileError, CALIBRATION_KEYS, CALIBRATION_VERSION,
+    calibration_from_values, calibration_values, hostile, parse_calibration,
+    CalibrationFileError, CALIBRATION_KEYS, CALIBRATION_VERSION, CALIBRATION_VERSION_1, V1_KEYS,
 };
 use moment_limiter::load_estimate::Calibration;
 
 /// A blob with any values and versions and a correct CRC: what a buggy or
 /// hostile writer could store (the encoder itself refuses bad values).
-fn raw_blob(values: [f64; 6], format: u16, schema: u16) -> Vec<u8> {
+fn raw_blob(values: &[f64], format: u16, schema: u16) -> Vec<u8> {
     let mut b = Vec::with_capacity(BLOB_LEN);
     b.extend_from_slice(&BLOB_MAGIC);
     b.extend_from_slice(&format.to_le_bytes());
@@ -32,15 +33,8 @@ fn raw_blob(values: [f64; 6], format: u16, schema: u16) -> Vec<u8> {
     b
 }
 
-fn values(c: &Calibration<f64>) -> [f64; 6] {
-    [
-        c.friction_up_n,
-        c.friction_down_n,
-        c.force_offset_n,
-        c.p1_offset_bar,
-        c.p2_offset_bar,
-        c.angle_offset_deg,
-    ]
+fn values(c: &Calibration<f64>) -> [f64; 8] {
+    calibration_values(c)
 }
 
 fn good() -> Calibration<f64> {
@@ -56,7 +50,7 @@ fn json_to_blob_to_the_same_calibration_in_f64_and_f32() {
         let cal = parse_calibration::<f64>(text.as_bytes()).unwrap();
         let blob = encode_calibration(&cal).unwrap();
         assert_eq!(blob.len(), BLOB_LEN);
-        assert_eq!(BLOB_LEN, 60);
+        assert_eq!(BLOB_LEN, 76);
         assert_eq!(decode_calibration::<f64>(&blob).unwrap(), cal);
         // The board's f32 calibration is the one the JSON reader gives in f32.
         assert_eq!(
@@ -64,9 +58,76 @@ fn json_to_blob_to_the_same_calibration_in_f64_and_f32() {
             parse_calibration::<f32>(text.as_bytes()).unwrap()
         );
         // And the raw writer agrees with the encoder byte for byte.
-        let raw = raw_blob(values(&cal), BLOB_FORMAT, CALIBRATION_VERSION as u16);
+        let raw = raw_blob(&values(&cal), BLOB_FORMAT, CALIBRATION_VERSION as u16);
         assert_eq!(raw, blob.to_vec());
     }
+}
+
+#[test]
+fn a_format_1_blob_still_decodes_as_constant_friction() {
+    // What a board calibrated before the seal law holds: 60 bytes, schema 1.
+    let v1 = parse_calibration::<f64>(hostile::GOOD_V1.as_bytes()).unwrap();
+    assert_eq!(v1.friction_up_per_force, 0.0);
+    let blob = raw_blob(
+        &values(&v1)[..V1_KEYS],
+        BLOB_FORMAT_1,
+        CALIBRATION_VERSION_1 as u16,
+    );
+    assert_eq!(blob.len(), BLOB_LEN_1);
+    assert_eq!(BLOB_LEN_1, 60);
+    assert_eq!(decode_calibration::<f64>(&blob).unwrap(), v1);
+    assert_eq!(
+        decode_calibration::<f32>(&blob).unwrap(),
+        parse_calibration::<f32>(hostile::GOOD_V1.as_bytes()).unwrap()
+    );
+    // Its bounds are enforced as in format 2.
+    let mut bad = values(&v1);
+    bad[3] = 50.0;
+    let e = decode_calibration::<f32>(&raw_blob(
+        &bad[..V1_KEYS],
+        BLOB_FORMAT_1,
+        CALIBRATION_VERSION_1 as u16,
+    ))
+    .unwrap_err();
+    assert_eq!(e.code(), 8, "{e:?}");
+    // Every bit flip refused.
+    for byte in 0..BLOB_LEN_1 {
+        for bit in 0..8 {
+            let mut b = blob.clone();
+            b[byte] ^= 1 << bit;
+            assert!(decode_calibration::<f32>(&b).is_err(), "byte {byte} bit {bit}");
+        }
+    }
+    // The length and the versions must agree: 60 bytes claiming format 2 or
+    // schema 2, 76 bytes claiming format 1 or schema 1.
+    assert_eq!(
+        decode_calibration::<f32>(&raw_blob(&values(&v1)[..V1_KEYS], BLOB_FORMAT, 1)),
+        Err(CalibrationBlobError::Format(BLOB_FORMAT))
+    );
+    assert_eq!(
+        decode_calibration::<f32>(&raw_blob(
+            &values(&v1)[..V1_KEYS],
+            BLOB_FORMAT_1,
+            CALIBRATION_VERSION as u16
+        )),
+        Err(CalibrationBlobError::SchemaVersion(CALIBRATION_VERSION as u16))
+    );
+    assert_eq!(
+        decode_calibration::<f32>(&raw_blob(&values(&v1), BLOB_FORMAT_1, 2)),
+        Err(CalibrationBlobError::Format(BLOB_FORMAT_1))
+    );
+    assert_eq!(
+        decode_calibration::<f32>(&raw_blob(&values(&v1), BLOB_FORMAT, 1)),
+        Err(CalibrationBlobError::SchemaVersion(1))
+    );
+    // Stored by an older firmware under store version 1: the board loads it.
+    let mut store = Store::new(CutFlash::<4>::new(), layout());
+    store
+        .write_blob(Key::Calibration, BLOB_FORMAT_1, &blob)
+        .unwrap();
+    let (back, crc) = load_calibration::<f64, _>(&mut store).unwrap();
+    assert_eq!(back, v1);
+    assert_eq!(crc, crc32(&blob));
 }
 
 #[test]
@@ -89,7 +150,7 @@ fn every_bound_of_the_schema_is_enforced_by_the_blob_decoder_as_by_the_json_read
         for (v, ok) in candidates {
             let mut vals = base;
             vals[k] = v;
-            let blob = raw_blob(vals, BLOB_FORMAT, CALIBRATION_VERSION as u16);
+            let blob = raw_blob(&vals, BLOB_FORMAT, CALIBRATION_VERSION as u16);
             let got = decode_calibration::<f32>(&blob);
             assert_eq!(got.is_ok(), ok, "{} = {v}: {got:?}", spec.key);
             if let Err(e) = &got {
@@ -107,17 +168,9 @@ fn every_bound_of_the_schema_is_enforced_by_the_blob_decoder_as_by_the_json_read
                 assert_eq!(e.detail(), k as u32, "the event names the key's index");
                 assert!(e.to_string().contains(&format!("`{}`", spec.key)), "{e}");
                 // The encoder refuses to write it in the first place.
-                let mut cal = good();
-                let mut cv = values(&cal);
+                let mut cv = values(&good());
                 cv[k] = v;
-                cal = Calibration {
-                    friction_up_n: cv[0],
-                    friction_down_n: cv[1],
-                    force_offset_n: cv[2],
-                    p1_offset_bar: cv[3],
-                    p2_offset_bar: cv[4],
-                    angle_offset_deg: cv[5],
-                };
+                let cal: Calibration<f64> = calibration_from_values(&cv);
                 assert!(
                     encode_calibration(&cal).is_err(),
                     "{} = {v} encoded",
@@ -156,7 +209,7 @@ fn corrupt_truncated_and_foreign_blobs_are_refused() {
         }
     }
     // Wrong lengths.
-    for n in [0, 4, BLOB_LEN - 1] {
+    for n in [0, 4, BLOB_LEN_1 - 1, BLOB_LEN_1 + 1, BLOB_LEN - 1] {
         assert_eq!(
             decode_calibration::<f32>(&blob[..n]),
             Err(CalibrationBlobError::Length(n))
@@ -176,11 +229,11 @@ fn corrupt_truncated_and_foreign_blobs_are_refused() {
     // Versions this firmware does not know, with a correct CRC.
     let v = values(&good());
     assert_eq!(
-        decode_calibration::<f32>(&raw_blob(v, BLOB_FORMAT + 1, CALIBRATION_VERSION as u16)),
+        decode_calibration::<f32>(&raw_blob(&v, BLOB_FORMAT + 1, CALIBRATION_VERSION as u16)),
         Err(CalibrationBlobError::Format(BLOB_FORMAT + 1))
     );
     for schema in [0, CALIBRATION_VERSION as u16 + 1] {
-        let e = decode_calibration::<f32>(&raw_blob(v, BLOB_FORMAT, schema)).unwrap_err();
+        let e = decode_calibration::<f32>(&raw_blob(&v, BLOB_FORMAT, schema)).unwrap_err();
         assert_eq!(e, CalibrationBlobError::SchemaVersion(schema));
         assert_eq!((e.code(), e.detail()), (7, u32::from(schema)));
     }
@@ -221,7 +274,7 @@ fn the_board_loads_only_a_good_stored_blob() {
         .write_blob(
             Key::Calibration,
             BLOB_FORMAT,
-            &raw_blob(v, BLOB_FORMAT, CALIBRATION_VERSION as u16),
+            &raw_blob(&v, BLOB_FORMAT, CALIBRATION_VERSION as u16),
         )
         .unwrap();
     let e = load_calibration::<f32, _>(&mut store).unwrap_err();

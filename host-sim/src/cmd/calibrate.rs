@@ -283,7 +283,13 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
     writeln!(out, "fit over {runs_text}: friction = a + b*|F| per direction")?;
     for (dir, f, mx) in [("up", learned.up, max.0), ("down", learned.down, max.1)] {
         let b_note = if f.slope_observable {
-            format!("b learned (slope {:.5} +- {:.5})", f.raw_b, f.b_se)
+            format!(
+                "b learned (slope {:.5} +- {:.5}, force {:.1} +- {:.1} kN)",
+                f.raw_b,
+                f.b_se,
+                f.force_mean_n / 1e3,
+                f.force_sd_n / 1e3
+            )
         } else {
             format!(
                 "b NOT observable (force spread {:.1} kN of {:.1} kN, slope {:.5} +- {:.5}): b = 0; add a --known-load-kg run",

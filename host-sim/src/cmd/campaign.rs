@@ -731,6 +731,101 @@ struct Summary {
     all: TallySummary,
     /// The same grades by rope mode and friction law.
     groups: Vec<GroupSummary>,
+    /// Each crane's synthesized friction law against the one its calibration learned.
+    calibrations: Vec<CraneLaw>,
+    /// Per friction law: how far the learned laws are from the synthesized ones.
+    calibration_by_friction: Vec<LawErrors>,
+}
+
+/// The piston force at which the learned and synthesized friction laws are
+/// compared (N): about a rated load at mid radius, where a constant law
+/// learned unloaded is furthest off.
+const COMPARE_AT_N: f64 = 300_000.0;
+
+/// A crane's friction law, synthesized and learned (a in N, b per N of piston force).
+#[derive(Debug, Serialize)]
+struct CraneLaw {
+    crane: usize,
+    friction: &'static str,
+    synth_up_a_n: f64,
+    synth_up_b: f64,
+    synth_down_a_n: f64,
+    synth_down_b: f64,
+    learned_up_a_n: f64,
+    learned_up_b: f64,
+    learned_down_a_n: f64,
+    learned_down_b: f64,
+    learned_force_offset_n: f64,
+    /// The synthesized pressure offset as a force (N; both transducers, eq. 4.1).
+    synth_force_offset_n: f64,
+    /// Learned − synthesized friction at [`COMPARE_AT_N`] (N).
+    up_error_at_300kn_n: f64,
+    down_error_at_300kn_n: f64,
+    /// The same for the friction at the unloaded run's force (≈ 85 kN).
+    up_error_at_85kn_n: f64,
+    down_error_at_85kn_n: f64,
+}
+
+impl CraneLaw {
+    fn new(crane: &Crane, cal: &CraneCalibration) -> Self {
+        let f = |a: f32| f64::from(a);
+        let err = |a: f64, b: f64, la: f64, lb: f64, at: f64| (la + lb * at) - (a + b * at);
+        let (lua, lub, lda, ldb) = (f(cal.friction_up_n), f(cal.friction_up_per_force), f(cal.friction_down_n), f(cal.friction_down_per_force));
+        let c = crane;
+        CraneLaw {
+            crane: c.index,
+            friction: c.friction,
+            synth_up_a_n: c.friction_up_a_n,
+            synth_up_b: c.friction_up_b,
+            synth_down_a_n: c.friction_down_a_n,
+            synth_down_b: c.friction_down_b,
+            learned_up_a_n: lua,
+            learned_up_b: lub,
+            learned_down_a_n: lda,
+            learned_down_b: ldb,
+            learned_force_offset_n: f(cal.force_offset_n),
+            synth_force_offset_n: {
+                use moment_limiter::piston_force::{annulus_area_m2, piston_area_m2};
+                c.pressure_offset_bar * moment_limiter::units::PA_PER_BAR * (piston_area_m2::<f64>() - annulus_area_m2::<f64>())
+            },
+            up_error_at_300kn_n: err(c.friction_up_a_n, c.friction_up_b, lua, lub, COMPARE_AT_N),
+            down_error_at_300kn_n: err(c.friction_down_a_n, c.friction_down_b, lda, ldb, COMPARE_AT_N),
+            up_error_at_85kn_n: err(c.friction_up_a_n, c.friction_up_b, lua, lub, 85_000.0),
+            down_error_at_85kn_n: err(c.friction_down_a_n, c.friction_down_b, lda, ldb, 85_000.0),
+        }
+    }
+}
+
+/// The errors of the learned laws of one friction law's cranes.
+#[derive(Debug, Serialize)]
+struct LawErrors {
+    friction: &'static str,
+    cranes: usize,
+    /// Mean |learned − synthesized| friction at 300 kN (N), up and down.
+    mean_abs_error_at_300kn_n: [f64; 2],
+    /// Largest |learned − synthesized| friction at 300 kN (N), up and down.
+    max_abs_error_at_300kn_n: [f64; 2],
+    /// Mean |learned − synthesized| b, up and down.
+    mean_abs_b_error: [f64; 2],
+}
+
+fn law_errors(laws: &[CraneLaw]) -> Vec<LawErrors> {
+    ["constant", "seal"]
+        .into_iter()
+        .map(|friction| {
+            let of: Vec<&CraneLaw> = laws.iter().filter(|l| l.friction == friction).collect();
+            let n = of.len().max(1) as f64;
+            let mean = |g: &dyn Fn(&CraneLaw) -> f64| of.iter().map(|l| g(l).abs()).sum::<f64>() / n;
+            let max = |g: &dyn Fn(&CraneLaw) -> f64| of.iter().map(|l| g(l).abs()).fold(0.0, f64::max);
+            LawErrors {
+                friction,
+                cranes: of.len(),
+                mean_abs_error_at_300kn_n: [mean(&|l| l.up_error_at_300kn_n), mean(&|l| l.down_error_at_300kn_n)],
+                max_abs_error_at_300kn_n: [max(&|l| l.up_error_at_300kn_n), max(&|l| l.down_error_at_300kn_n)],
+                mean_abs_b_error: [mean(&|l| l.learned_up_b - l.synth_up_b), mean(&|l| l.learned_down_b - l.synth_down_b)],
+            }
+        })
+        .collect()
 }
 
 fn parse_shard(s: Option<&str>) -> Result<(usize, usize)> {
@@ -852,7 +947,10 @@ fn run_campaign(args: &CampaignArgs, progress: bool) -> Result<(Summary, Vec<Str
         failed_simulations,
         all: all.summary(),
         groups: GROUPS.iter().zip(groups).map(|(&(rope, friction), t)| GroupSummary { rope, friction, grades: t.summary() }).collect(),
+        calibrations: cranes.iter().zip(&calibrations).map(|(c, cal)| CraneLaw::new(c, cal)).collect(),
+        calibration_by_friction: Vec::new(),
     };
+    let s = Summary { calibration_by_friction: law_errors(&s.calibrations), ..s };
     Ok((s, lines))
 }
 
@@ -894,6 +992,14 @@ pub fn run(args: CampaignArgs) -> Result<u8> {
         for g in &summary.groups {
             let _ = writeln!(out, "\nrope {}, friction {}: {} scenarios", g.rope, g.friction, g.grades.scenarios);
             let _ = write_tally(&mut out, &g.grades);
+        }
+        let _ = writeln!(out, "\ncalibration: friction law a + b·|F| per direction, synthesized -> learned (a in N)");
+        for l in &summary.calibrations {
+            let _ = writeln!(
+                out,
+                "crane {:>3} {:<8} up {:>7.0} {:.4} -> {:>7.0} {:.4}   down {:>7.0} {:.4} -> {:>7.0} {:.4}   error at 300 kN up {:>+6.0} down {:>+6.0} N",
+                l.crane, l.friction, l.synth_up_a_n, l.synth_up_b, l.learned_up_a_n, l.learned_up_b, l.synth_down_a_n, l.synth_down_b, l.learned_down_a_n, l.learned_down_b, l.up_error_at_300kn_n, l.down_error_at_300kn_n
+            );
         }
     }
     eprintln!("campaign: {} scenarios in {elapsed:.1} s ({:.1} ms each, {} threads)", summary.all.scenarios, 1e3 * elapsed / summary.all.scenarios.max(1) as f64, rayon::current_num_threads());
