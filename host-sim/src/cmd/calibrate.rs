@@ -205,7 +205,7 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
     }
     let min = args.min_samples;
     let too_few = |e| {
-        anyhow::anyhow!("{e}; each direction needs at least {min} samples of steady luffing (1.5 s after the start, ≥ 0.5 °/s)")
+        anyhow::anyhow!("{e}; each direction needs at least {min} samples of steady luffing (3 s after the start, ≥ 0.5 °/s)")
     };
     let base = unloaded.fit(min).map_err(too_few)?;
     // Each known-load run against the unloaded runs: at rest the seals
