@@ -182,11 +182,14 @@ fn calibrate_learns_friction_and_replay_uses_it() {
     let j: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&cal).unwrap()).unwrap();
     // The logs were made with 12 kN friction up and 8 kN down: the mean
-    // residuals are offset + friction up and offset − friction down.
+    // residuals are offset + friction up and offset − friction down, the
+    // friction a + b·F at the empty boom's force in these runs (≈ 85 kN).
     let key = |k: &str| j[k].as_f64().unwrap_or_else(|| panic!("no `{k}` in {j}"));
-    assert_eq!(j["version"], 1);
-    let up = key("force_offset_n") + key("friction_up_n");
-    let down = key("force_offset_n") - key("friction_down_n");
+    assert_eq!(j["version"], 2);
+    let f = 85_000.0;
+    let up = key("force_offset_n") + key("friction_up_n") + key("friction_up_per_force") * f;
+    let down =
+        key("force_offset_n") - key("friction_down_n") - key("friction_down_per_force") * f;
     assert!((up - 12_000.0).abs() < 1_000.0, "{up}");
     assert!((down + 8_000.0).abs() < 1_000.0, "{down}");
     // Only one direction: refused.
