@@ -89,14 +89,14 @@
 //! never on the force. When none can weigh, the load is taken hanging
 //! straight and still (factor 1).
 //!
-//! The cost per cycle: [`HYPOTHESES`] swing observers (two 5 ms sub-steps at
+//! The cost per cycle: [`HYPOTHESES`] swing observers (one 10 ms sub-step at
 //! 100 Hz each), as many solutions of a quadratic and two filter stages;
 //! no heap, fixed loops.
 
 use crane_model::loads::load_model::Quadratic;
 use crane_model::Real;
 
-use crate::held_pendulum::HeldPendulum;
+use crate::held_pendulum::{BoomTip, HeldPendulum};
 use crate::swing::{SwingGeometry, SwingObserver, MAX_TAN_SWING};
 
 /// Hanging lengths of the held-rope hypotheses (m).
@@ -156,6 +156,7 @@ struct Hypothesis<T> {
     /// `swing`.
     held: Option<HeldPendulum<T>>,
     swing: SwingObserver<T>,
+    /// The paid-out rope's tan φ (a held rope's is its pendulum's).
     tan_swing: T,
     /// The stages of the slow average W̄_k (kg); `None` while the
     /// hypothesis cannot weigh.
@@ -243,15 +244,14 @@ impl<T: Real> StaticLoadBank<T> {
     /// and acceleration (at the force's instant), `dt_s` after the previous
     /// call; returns the paid-out rope's tan φ (a diagnostic).
     pub fn advance(&mut self, angle_rad: T, rate_rad_s: T, accel_rad_s2: T, dt_s: T) -> T {
-        let boom_trig = angle_rad.sin_cos_own();
+        let tip = BoomTip::new(angle_rad.sin_cos_own(), self.geometry.boom_length_m, rate_rad_s, accel_rad_s2, dt_s);
         for h in self.hypotheses.iter_mut() {
-            h.tan_swing = match h.held.as_mut() {
+            match h.held.as_mut() {
                 Some(p) => {
-                    p.update_at(boom_trig, rate_rad_s, accel_rad_s2, dt_s);
-                    p.tan_swing()
+                    p.update_with(&tip);
                 }
-                None => h.swing.update(angle_rad, dt_s),
-            };
+                None => h.tan_swing = h.swing.update(angle_rad, dt_s),
+            }
         }
         self.still = rate_rad_s.abs() <= T::lit(MOVING_RAD_S);
         if !self.still {
