@@ -244,8 +244,9 @@ impl<T: Real> StaticLoadBank<T> {
     pub fn advance(&mut self, angle_rad: T, rate_rad_s: T, accel_rad_s2: T, dt_s: T) -> T {
         let tip = BoomTip::new(angle_rad.sin_cos_own(), self.geometry.boom_length_m, rate_rad_s, accel_rad_s2, dt_s);
         self.ropes.update(&tip);
-        for h in self.hypotheses.iter_mut().filter(|h| h.held.is_none()) {
-            h.tan_swing = h.swing.update(angle_rad, dt_s);
+        // Hypothesis 0 is the paid-out rope (`new`), the only one with a swing observer of its own.
+        if let Some(paid_out) = self.hypotheses.first_mut() {
+            paid_out.tan_swing = paid_out.swing.update(angle_rad, dt_s);
         }
         self.still = rate_rad_s.abs() <= T::lit(MOVING_RAD_S);
         if !self.still {
