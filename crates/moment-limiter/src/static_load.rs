@@ -89,14 +89,14 @@
 //! never on the force. When none can weigh, the load is taken hanging
 //! straight and still (factor 1).
 //!
-//! The cost per cycle: [`HYPOTHESES`] swing observers (two 5 ms sub-steps at
+//! The cost per cycle: [`HYPOTHESES`] swing observers (one 10 ms sub-step at
 //! 100 Hz each), as many solutions of a quadratic and two filter stages;
 //! no heap, fixed loops.
 
 use crane_model::loads::load_model::Quadratic;
 use crane_model::Real;
 
-use crate::held_pendulum::HeldPendulum;
+use crate::held_pendulum::{BoomTip, HeldRopes};
 use crate::swing::{SwingGeometry, SwingObserver, MAX_TAN_SWING};
 
 /// Hanging lengths of the held-rope hypotheses (m).
@@ -152,10 +152,11 @@ pub struct LoadTerms<T> {
 /// One hypothesis: its swing observer and its slow average.
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct Hypothesis<T> {
-    /// A held rope's pendulum; `None` for the paid-out rope, whose swing is
-    /// `swing`.
-    held: Option<HeldPendulum<T>>,
+    /// A held rope's index in the bank's [`HeldRopes`]; `None` for the
+    /// paid-out rope, whose swing is `swing`.
+    held: Option<usize>,
     swing: SwingObserver<T>,
+    /// The paid-out rope's tan φ (a held rope's is its pendulum's).
     tan_swing: T,
     /// The stages of the slow average W̄_k (kg); `None` while the
     /// hypothesis cannot weigh.
@@ -167,6 +168,8 @@ struct Hypothesis<T> {
 pub struct StaticLoadBank<T> {
     geometry: SwingGeometry<T>,
     hypotheses: [Hypothesis<T>; HYPOTHESES],
+    /// The held ropes' pendulums, advanced together.
+    ropes: HeldRopes<T, { HELD_LENGTHS_M.len() }>,
     dt_s: T,
     /// The smoothing stage of W_fast; `None` until the first load.
     fast_stage: Option<T>,
@@ -191,12 +194,7 @@ impl<T: Real> StaticLoadBank<T> {
     /// A bank with the load hanging still in every hypothesis.
     pub fn new(geometry: SwingGeometry<T>) -> Self {
         let make = |k: usize| {
-            let held = k
-                .checked_sub(1)
-                .and_then(|i| HELD_LENGTHS_M.get(i))
-                .map(|&l| {
-                    HeldPendulum::new(T::lit(l), geometry.boom_length_m, geometry.gravity_m_s2)
-                });
+            let held = k.checked_sub(1);
             Hypothesis {
                 held,
                 swing: SwingObserver::new(geometry),
@@ -207,6 +205,7 @@ impl<T: Real> StaticLoadBank<T> {
         Self {
             geometry,
             hypotheses: core::array::from_fn(make),
+            ropes: HeldRopes::new(HELD_LENGTHS_M.map(T::lit), geometry.gravity_m_s2),
             dt_s: T::lit(0.0),
             fast_stage: None,
             moved: false,
@@ -243,15 +242,11 @@ impl<T: Real> StaticLoadBank<T> {
     /// and acceleration (at the force's instant), `dt_s` after the previous
     /// call; returns the paid-out rope's tan φ (a diagnostic).
     pub fn advance(&mut self, angle_rad: T, rate_rad_s: T, accel_rad_s2: T, dt_s: T) -> T {
-        let boom_trig = angle_rad.sin_cos_own();
-        for h in self.hypotheses.iter_mut() {
-            h.tan_swing = match h.held.as_mut() {
-                Some(p) => {
-                    p.update_at(boom_trig, rate_rad_s, accel_rad_s2, dt_s);
-                    p.tan_swing()
-                }
-                None => h.swing.update(angle_rad, dt_s),
-            };
+        let tip = BoomTip::new(angle_rad.sin_cos_own(), self.geometry.boom_length_m, rate_rad_s, accel_rad_s2, dt_s);
+        self.ropes.update(&tip);
+        // Hypothesis 0 is the paid-out rope (`new`), the only one with a swing observer of its own.
+        if let Some(paid_out) = self.hypotheses.first_mut() {
+            paid_out.tan_swing = paid_out.swing.update(angle_rad, dt_s);
         }
         self.still = rate_rad_s.abs() <= T::lit(MOVING_RAD_S);
         if !self.still {
@@ -272,8 +267,8 @@ impl<T: Real> StaticLoadBank<T> {
         let factor = match h.held {
             // A held rope longer than the tip is high: the load would be
             // below ground.
-            Some(p) if p.length_m() > tip_height_m => return None,
-            Some(p) => p.factor(),
+            Some(i) if self.ropes.length_m(i)? > tip_height_m => return None,
+            Some(i) => self.ropes.factor(i)?,
             None => T::lit(1.0) + tan_theta * h.tan_swing.max(-lim).min(lim),
         };
         (factor.is_finite() && factor >= T::lit(MIN_LOAD_FACTOR)).then_some(factor)
@@ -389,7 +384,7 @@ mod tests {
             th += rate * dt;
             bank.advance(th, rate, acc, dt);
             // The truth: a held rope of 7.324 m (hypothesis 5), its swing too.
-            let truth = bank.hypotheses[5].held.unwrap().factor();
+            let truth = bank.ropes.factor(4).unwrap();
             let force = 100_000.0 + 10.0 * 3000.0 * truth;
             let est = bank
                 .update(&LoadTerms {

@@ -22,9 +22,12 @@
 //! - **early**: an OVERLOAD onset while 0.85 < u < 1/1.1;
 //! - **false**: an OVERLOAD onset while u ≤ 0.85;
 //! - WARNING onsets, and those while u < 0.8;
-//! - the estimate/true band (loads ≥ 1 t) in constant-velocity motion (1 s after
-//!   the acceleration ramp to the deceleration) and at rest (1.5 s after a move);
-//! - the detection delay: first OVERLOAD − time u reached 1.0.
+//! - the estimate/true band (loads ≥ 30 % of the rated load at the instant,
+//!   issue 11's bound; the limiter not in FAULT) in
+//!   constant-velocity motion (1 s after the acceleration ramp to the
+//!   deceleration) and at rest (1.5 s after a move);
+//! - the detection delay: first OVERLOAD − time u reached 1.0;
+//! - the worst scenario of each kind (index and seed) in the summary.
 //!
 //! Every scenario's JSON object carries its seed and a `synth` command line that
 //! re-makes its log. `--shard K/N` runs the scenarios i with i mod N = K − 1, so
@@ -452,6 +455,10 @@ struct Grade {
     first_overload_s: Option<f64>,
     /// First OVERLOAD − t_true_overload (s).
     detection_delay_s: Option<f64>,
+    /// True u when the limiter first cut (OVERLOAD or FAULT).
+    u_at_first_cut: Option<f64>,
+    /// The lowest true u at any OVERLOAD onset.
+    min_u_at_overload_onset: Option<f64>,
     missed: bool,
     late: bool,
     early: bool,
@@ -522,6 +529,7 @@ fn grade(sc: &Scenario, rows: &[SynthRow], out: &[limiter_adapter::Output], rate
             match o.state {
                 State::Overload => {
                     g.overload_onsets += 1;
+                    g.min_u_at_overload_onset = Some(g.min_u_at_overload_onset.map_or(u, |m: f64| m.min(u)));
                     if g.first_overload_s.is_none() {
                         g.first_overload_s = Some(r.t_s);
                     }
@@ -542,11 +550,16 @@ fn grade(sc: &Scenario, rows: &[SynthRow], out: &[limiter_adapter::Output], rate
             }
             if matches!(o.state, State::Overload | State::Fault) && first_cut_s.is_none() {
                 first_cut_s = Some(r.t_s);
+                g.u_at_first_cut = Some(u);
             }
             prev = o.state;
         }
         prev_load = r.true_load_kg;
-        if k % 5 == 0 && r.true_load_kg >= 1000.0 && o.load_kg.is_finite() {
+        // In FAULT the limiter has cut and its estimate means nothing (a
+        // transducer past its range reads as a wild load): not in the band.
+        // Loads ≥ 30 % of rated (issue 11): a light load at a steep boom
+        // moves the piston force by less than the friction's uncertainty.
+        if k % 5 == 0 && u >= 0.3 && o.load_kg.is_finite() && o.state != State::Fault {
             let ratio = (f64::from(o.load_kg) / r.true_load_kg) as f32;
             let t = r.t_s;
             if t >= motion.0 && t <= motion.1 {
@@ -617,10 +630,75 @@ struct Tally {
     rest: Vec<f32>,
     delays: Vec<f32>,
     lift_off_delays: Vec<f32>,
+    worst: WorstCases,
+}
+
+/// One scenario that is the worst of its kind, and by how much.
+#[derive(Debug, Clone, Copy, Serialize)]
+struct WorstCase {
+    index: usize,
+    seed: u64,
+    /// What makes it the worst (see [`WorstCases`]).
+    value: f64,
+}
+
+/// The worst scenario of each kind, to re-make with `synth` from its seed.
+#[derive(Debug, Clone, Copy, Default, Serialize)]
+struct WorstCases {
+    /// Missed: the highest true u at the limiter's first cut (the highest
+    /// true u reached, if it never cut).
+    missed: Option<WorstCase>,
+    /// Late: the longest detection delay (s).
+    late: Option<WorstCase>,
+    /// Early: the lowest true u at an OVERLOAD onset.
+    early: Option<WorstCase>,
+    /// False: the lowest true u at an OVERLOAD onset.
+    false_overload: Option<WorstCase>,
+    /// Graded lift-offs: the longest delay from leaving the ground to the cut (s).
+    lift_off_delay: Option<WorstCase>,
+    /// The lowest and the highest estimate/true ratio in constant-velocity motion.
+    band_motion_low: Option<WorstCase>,
+    band_motion_high: Option<WorstCase>,
+    /// The same at rest.
+    band_rest_low: Option<WorstCase>,
+    band_rest_high: Option<WorstCase>,
+}
+
+impl WorstCases {
+    fn add(&mut self, sc: &Scenario, g: &Grade) {
+        let case = |value: f64| WorstCase { index: sc.index, seed: sc.seed, value };
+        let keep = |slot: &mut Option<WorstCase>, value: Option<f64>, higher: bool| {
+            if let Some(v) = value.filter(|v| v.is_finite()) {
+                if slot.is_none_or(|w| if higher { v > w.value } else { v < w.value }) {
+                    *slot = Some(case(v));
+                }
+            }
+        };
+        if g.missed {
+            keep(&mut self.missed, Some(g.u_at_first_cut.unwrap_or(g.max_true_utilization)), true);
+        }
+        if g.late {
+            keep(&mut self.late, g.detection_delay_s, true);
+        }
+        if g.early {
+            keep(&mut self.early, g.min_u_at_overload_onset, false);
+        }
+        if g.false_overload {
+            keep(&mut self.false_overload, g.min_u_at_overload_onset, false);
+        }
+        keep(&mut self.lift_off_delay, g.lift_off_delay_s, true);
+        let lo = |v: &[f32]| v.iter().copied().reduce(f32::min).map(f64::from);
+        let hi = |v: &[f32]| v.iter().copied().reduce(f32::max).map(f64::from);
+        keep(&mut self.band_motion_low, lo(&g.band_motion), false);
+        keep(&mut self.band_motion_high, hi(&g.band_motion), true);
+        keep(&mut self.band_rest_low, lo(&g.band_rest), false);
+        keep(&mut self.band_rest_high, hi(&g.band_rest), true);
+    }
 }
 
 impl Tally {
-    fn add(&mut self, g: &Grade) {
+    fn add(&mut self, sc: &Scenario, g: &Grade) {
+        self.worst.add(sc, g);
         self.scenarios += 1;
         self.overload_scenarios += usize::from(g.t_true_overload_s.is_some());
         self.missed += usize::from(g.missed);
@@ -671,6 +749,7 @@ impl Tally {
             detection_delay_s_max: max(&self.delays),
             lift_off_delay_s_p5_p50_p95: lift,
             lift_off_delay_s_max: max(&self.lift_off_delays),
+            worst: self.worst,
         }
     }
 }
@@ -708,6 +787,8 @@ struct TallySummary {
     /// First OVERLOAD (or FAULT) − the load leaving the ground, in the graded lift-offs (s).
     lift_off_delay_s_p5_p50_p95: [f64; 3],
     lift_off_delay_s_max: f64,
+    /// The worst scenario of each kind.
+    worst: WorstCases,
 }
 
 /// One rope mode and friction law.
@@ -930,10 +1011,10 @@ fn run_campaign(args: &CampaignArgs, progress: bool) -> Result<(Summary, Vec<Str
                 continue;
             }
         };
-        all.add(&g);
+        all.add(&sc, &g);
         let friction = cranes[sc.crane].friction;
         if let Some(t) = GROUPS.iter().position(|&(r, f)| r == sc.rope && f == friction).and_then(|i| groups.get_mut(i)) {
-            t.add(&g);
+            t.add(&sc, &g);
         }
         if args.json {
             lines.push(serde_json::to_string(&ScenarioRecord { r#type: "scenario", scenario: &sc, grade: &g, synth })?);
@@ -968,7 +1049,25 @@ fn write_tally(out: &mut impl Write, t: &TallySummary) -> std::io::Result<()> {
     writeln!(out, "band in motion    {} (estimate/true, p5 / p50 / p95)", p(t.band_motion_p5_p50_p95))?;
     writeln!(out, "band at rest      {}", p(t.band_rest_p5_p50_p95))?;
     writeln!(out, "detection delay   {} s (p5 / p50 / p95), max {:.3} s", p(t.detection_delay_s_p5_p50_p95), t.detection_delay_s_max)?;
-    writeln!(out, "lift-off delay    {} s after leaving the ground (p5 / p50 / p95), max {:.3} s", p(t.lift_off_delay_s_p5_p50_p95), t.lift_off_delay_s_max)
+    writeln!(out, "lift-off delay    {} s after leaving the ground (p5 / p50 / p95), max {:.3} s", p(t.lift_off_delay_s_p5_p50_p95), t.lift_off_delay_s_max)?;
+    let w = &t.worst;
+    let kinds = [
+        ("missed", "true u at the first cut", w.missed),
+        ("late", "detection delay (s)", w.late),
+        ("early", "true u at OVERLOAD", w.early),
+        ("false", "true u at OVERLOAD", w.false_overload),
+        ("lift-off", "delay after leaving the ground (s)", w.lift_off_delay),
+        ("band motion low", "estimate/true", w.band_motion_low),
+        ("band motion high", "estimate/true", w.band_motion_high),
+        ("band rest low", "estimate/true", w.band_rest_low),
+        ("band rest high", "estimate/true", w.band_rest_high),
+    ];
+    for (kind, what, case) in kinds {
+        if let Some(c) = case {
+            writeln!(out, "worst {kind:<16} #{} seed {}: {what} {:.3}", c.index, c.seed, c.value)?;
+        }
+    }
+    Ok(())
 }
 
 /// Runs the subcommand; returns the exit code (0; the grades are in the output).
