@@ -467,9 +467,9 @@ fn trace() {
         if k % 10 == 0 {
             let (Some(e), Some(m)) = (rep.estimate, rep.measurement) else { continue };
             println!(
-                "t {:6.2} th {:6.2} swing {:6.2}deg ratio {:.3} u {:.3} tanphi {:+.3} acc {:+.2} state {:?}",
+                "t {:6.2} th {:6.2} swing {:6.2}deg ratio {:.3} u {:.3} tanphi {:+.3} acc {:+.2} state {:?} {:?}",
                 r.t_s, r.truth.boom_angle_rad.to_degrees(), r.truth.swing_rad.to_degrees(), e.load_kg / r.true_load_kg / 1.05,
-                r.true_load_kg / rated_kg(r.truth.boom_angle_rad), m.tan_swing, m.accel_deg_s2, rep.state
+                r.true_load_kg / rated_kg(r.truth.boom_angle_rad), m.tan_swing, m.accel_deg_s2, rep.state, e.static_load.map(|s| (s.fast_kg / r.true_load_kg, s.slow_kg.map(|w| w / r.true_load_kg)))
             );
         }
     }

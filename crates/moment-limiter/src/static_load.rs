@@ -132,6 +132,14 @@ pub const MOVING_RAD_S: f64 = 0.15 * core::f64::consts::PI / 180.0;
 /// 0.06–0.35 and this stage at 0.33–0.57; it delays a lift-off by 0.23 s.
 pub const FAST_SMOOTHING_HZ: f64 = 0.7;
 
+/// Longest time the weighing of a move is held at rest (s): two swings of
+/// the longest rope of the bank (9.5 s at 22 m). See [`StaticLoadBank::update`].
+pub const REST_HOLD_S: f64 = 20.0;
+
+/// Shortest motion after which the bank holds the move's weighing at rest
+/// (s): a flicker of the rate at rest is no move.
+pub const MOVE_FOR_HOLD_S: f64 = 1.0;
+
 /// Smallest factor 1 + h·a_Ly/g + tan θ·tan φ at which a hypothesis weighs
 /// the load (below it, it holds its last mass; see [`StaticLoadBank::update`]).
 pub const MIN_LOAD_FACTOR: f64 = 0.5;
@@ -177,6 +185,16 @@ pub struct StaticLoadBank<T> {
     moved: bool,
     /// The boom's rate at the last advance is below [`MOVING_RAD_S`].
     still: bool,
+    /// How long the boom has been moving without a pause (s).
+    moving_s: T,
+    /// How long the boom has been still (s).
+    still_s: T,
+    /// The last load reported (kg).
+    last_kg: Option<T>,
+    /// The move's weighing held at rest (kg); see [`REST_HOLD_S`].
+    hold_kg: Option<T>,
+    /// W_slow of the last cycle (kg), where averages that start begin.
+    slow_kg: Option<T>,
 }
 
 /// The bank's answer of one cycle.
@@ -210,16 +228,24 @@ impl<T: Real> StaticLoadBank<T> {
             fast_stage: None,
             moved: false,
             still: true,
+            moving_s: T::lit(0.0),
+            still_s: T::lit(0.0),
+            last_kg: None,
+            hold_kg: None,
+            slow_kg: None,
         }
     }
 
     /// Forgets the averages, keeps the swing (after a fault interrupted the
-    /// force: the load swings on).
+    /// force: the load swings on) and the move's weighing held at rest (it
+    /// only ever raises the reading: a load added over the gap is read by
+    /// the force as before).
     pub fn restart_averages(&mut self) {
         for h in self.hypotheses.iter_mut() {
             h.slow_kg = None;
         }
         self.fast_stage = None;
+        self.slow_kg = None;
     }
 
     /// Moves every paid-out-rope observer's tip to `angle_rad` keeping its
@@ -248,15 +274,29 @@ impl<T: Real> StaticLoadBank<T> {
         if let Some(paid_out) = self.hypotheses.first_mut() {
             paid_out.tan_swing = paid_out.swing.update(angle_rad, dt_s);
         }
-        self.still = rate_rad_s.abs() <= T::lit(MOVING_RAD_S);
-        if !self.still {
-            self.moved = true;
-        }
         self.dt_s = if dt_s.is_finite() && dt_s > T::lit(0.0) {
             dt_s
         } else {
             T::lit(0.0)
         };
+        let still = rate_rad_s.abs() <= T::lit(MOVING_RAD_S);
+        if still {
+            // A move ends: its last weighing is held (see `update`).
+            if !self.still && self.moving_s >= T::lit(MOVE_FOR_HOLD_S) {
+                self.hold_kg = self.last_kg;
+                self.still_s = T::lit(0.0);
+            }
+            self.moving_s = T::lit(0.0);
+            self.still_s += self.dt_s;
+            if self.still_s > T::lit(REST_HOLD_S) {
+                self.hold_kg = None;
+            }
+        } else {
+            self.moved = true;
+            self.moving_s += self.dt_s;
+            self.hold_kg = None;
+        }
+        self.still = still;
         self.hypotheses.first().map_or(T::lit(0.0), |h| h.tan_swing)
     }
 
@@ -272,6 +312,15 @@ impl<T: Real> StaticLoadBank<T> {
             None => T::lit(1.0) + tan_theta * h.tan_swing.max(-lim).min(lim),
         };
         (factor.is_finite() && factor >= T::lit(MIN_LOAD_FACTOR)).then_some(factor)
+    }
+
+    /// Whether hypothesis `h` is possible at all with the tip `tip_height_m`
+    /// high: a held rope no longer than the tip is high.
+    fn possible(&self, h: &Hypothesis<T>, tip_height_m: T) -> bool {
+        match h.held {
+            Some(i) => self.ropes.length_m(i).is_some_and(|l| l <= tip_height_m),
+            None => true,
+        }
     }
 
     /// The load of this cycle (after [`advance`](Self::advance)); `None` when
@@ -290,29 +339,48 @@ impl<T: Real> StaticLoadBank<T> {
         // are (motion only).
         let mut factors = [None; HYPOTHESES];
         let (mut f_lo, mut f_hi): (Option<T>, Option<T>) = (None, None);
+        // Every possible rope (one whose load would be above ground) weighs:
+        // agreement among fewer says nothing (one alone always agrees).
+        let mut all_weigh = true;
         for (slot, h) in factors.iter_mut().zip(self.hypotheses.iter()) {
             *slot = self.factor(h, tan_theta, tip_height);
             if let Some(f) = *slot {
                 f_lo = Some(f_lo.map_or(f, |l: T| l.min(f)));
                 f_hi = Some(f_hi.map_or(f, |h: T| h.max(f)));
+            } else if self.possible(h, tip_height) {
+                all_weigh = false;
             }
         }
         let agree = !self.moved
             || self.still
+                && all_weigh
                 && match (f_lo, f_hi) {
                     (Some(lo), Some(hi)) => hi <= lo * T::lit(1.0 + AGREEMENT),
                     _ => false,
                 };
         let mut fast: Option<T> = None;
+        let still = self.still;
+        let prev_slow = self.slow_kg;
         for (h, factor) in self.hypotheses.iter_mut().zip(factors.iter()) {
             let Some(f) = *factor else {
-                // Cannot weigh now: its average starts afresh when it can.
-                h.slow_kg = None;
+                // Cannot weigh now. In motion its average starts afresh when
+                // it can (the rope moved on meanwhile); at rest it is kept.
+                if !still {
+                    h.slow_kg = None;
+                }
                 continue;
             };
             let w = terms.at_rest.scale_load_part(f).solve(terms.force_n)?;
             fast = Some(fast.map_or(w, |m: T| m.min(w)));
-            let mut stages = h.slow_kg.unwrap_or([w; SLOW_STAGES]);
+            // A hypothesis that starts weighing (or starts again) starts no
+            // lower than the bank's weighing of the last cycle: a rope that
+            // becomes possible as the tip rises has not followed the true
+            // swing, and its W_k of one instant (0.71 of the load with a 3 m
+            // rope at 55°) is no weighing. It starts at its own W_k when
+            // that is higher (in the min it cannot raise W_slow above the
+            // ropes already weighing).
+            let start = prev_slow.map_or(w, |p| p.max(w));
+            let mut stages = h.slow_kg.unwrap_or([start; SLOW_STAGES]);
             let mut input = w;
             for st in stages.iter_mut() {
                 *st += alpha * (input - *st);
@@ -341,15 +409,33 @@ impl<T: Real> StaticLoadBank<T> {
         let mut slow: Option<T> = None;
         for (h, factor) in self.hypotheses.iter_mut().zip(factors.iter()) {
             if agree {
-                h.slow_kg = Some([fast; SLOW_STAGES]);
+                // Raised to W_fast at once (a lift-off), lowered only at the
+                // averages' pace: the force leads the lagging angle at the
+                // start of a move (its J·θ̈ and ride-down read as a dip of
+                // 6 % over 0.3 s before the rate is seen) and that dip is no
+                // weighing to start the move from.
+                let stages = h.slow_kg.map_or([fast; SLOW_STAGES], |st| st.map(|x| x.max(fast)));
+                h.slow_kg = Some(stages);
             }
             let last = h.slow_kg.and_then(|st| st.last().copied());
-            if let (Some(_), Some(last)) = (factor, last) {
+            if let (true, Some(last)) = (factor.is_some() || still, last) {
                 slow = Some(slow.map_or(last, |m: T| m.min(last)));
             }
         }
+        // At rest after a move, the move's last weighing is held while the
+        // ropes disagree (see the module doc): the swing of a short rope at
+        // a steep boom makes the force unusable for weighing.
+        if agree {
+            self.hold_kg = None;
+        }
+        self.slow_kg = slow;
+        let now = slow.map_or(fast, |s| s.max(fast));
+        let load_kg = self.hold_kg.map_or(now, |h| h.max(now));
+        if !self.still {
+            self.last_kg = Some(load_kg);
+        }
         Some(StaticLoad {
-            load_kg: slow.map_or(fast, |s| s.max(fast)),
+            load_kg,
             fast_kg: fast,
             slow_kg: slow,
         })
