@@ -58,7 +58,15 @@ fn sensors(seals: Seals, seed: u32) -> SensorModel {
             FrictionLaw::Seal { base_n: 3_500.0, per_force: 0.02 },
         ),
     };
-    SensorModel { seed, friction_up: up, friction_down: down, ..SensorModel::standard() }
+    let standard = SensorModel::standard();
+    let pendulum = SENSOR_LAG_S.with(|l| l.get()).map_or(standard.pendulum, |tau_s| synth_core::PendulumSensor::FirstOrder { tau_s });
+    SensorModel { seed, friction_up: up, friction_down: down, pendulum, ..standard }
+}
+
+thread_local! {
+    /// The angle sensor as a first-order lag of this time constant (s)
+    /// instead of synth's standard pendulum, for the lag measurement.
+    static SENSOR_LAG_S: std::cell::Cell<Option<f64>> = const { std::cell::Cell::new(None) };
 }
 
 /// The rope of a scenario.
@@ -433,15 +441,29 @@ fn band(precision: Precision) {
 }
 
 #[test]
-#[ignore = "KNOWN GAP: measured p5/p50/p95 in motion 0.978/1.035/1.073 (p5 < 1.00: the 3 m held rope in the 10 s 40°→80° moves, 0.78–0.81), at rest 0.075/1.027/1.061 (p5 < 1.00: at rest at 80° after the 10 s raise with a 3 m or mid-length held rope the load swings 14–25° and, at tan 80° = 5.7, its pull dominates the force (p1 leaves its range): the estimate swings −1.3…1.5 × the load; every other group stays within 0.98–1.08)"]
 fn band_in_motion_and_at_rest_f64() {
     band(Precision::F64);
 }
 
 #[test]
-#[ignore = "KNOWN GAP: as the f64 test (motion 0.978/1.035/1.073, rest 0.075/1.027/1.061)"]
 fn band_in_motion_and_at_rest_f32() {
     band(Precision::F32);
+}
+
+/// The band's dependence on the angle sensor's true lag (the limiter assumes
+/// 0.11 s; the campaign's cranes have 0.05–0.3 s), printed, not asserted:
+/// `cargo test --release -p host-sim --test field_limiter band_against_sensor_lag -- --ignored --nocapture`.
+#[test]
+#[ignore = "measurement"]
+fn band_against_sensor_lag() {
+    for tau in [0.05, 0.11, 0.2, 0.3] {
+        SENSOR_LAG_S.with(|l| l.set(Some(tau)));
+        println!("first-order lag {tau} s:");
+        let r = std::panic::catch_unwind(|| band(Precision::F64));
+        if r.is_err() {
+            println!("  (outside the band)");
+        }
+    }
 }
 
 /// A trace of one scenario for diagnosis (not a test of requirements):

@@ -136,6 +136,10 @@ pub const FAST_SMOOTHING_HZ: f64 = 0.7;
 /// the longest rope of the bank (9.5 s at 22 m). See [`StaticLoadBank::update`].
 pub const REST_HOLD_S: f64 = 20.0;
 
+/// Spread of the possible ropes' factors (f_max/f_min − 1) beyond which the
+/// force cannot weigh the load at rest and the move's weighing is held.
+pub const UNUSABLE_SPREAD: f64 = 0.25;
+
 /// Shortest motion after which the bank holds the move's weighing at rest
 /// (s): a flicker of the rate at rest is no move.
 pub const MOVE_FOR_HOLD_S: f64 = 1.0;
@@ -430,7 +434,17 @@ impl<T: Real> StaticLoadBank<T> {
         }
         self.slow_kg = slow;
         let now = slow.map_or(fast, |s| s.max(fast));
-        let load_kg = self.hold_kg.map_or(now, |h| h.max(now));
+        // The force cannot weigh while a possible rope cannot or the ropes'
+        // factors spread by more than [`UNUSABLE_SPREAD`].
+        let unusable = !all_weigh
+            || match (f_lo, f_hi) {
+                (Some(lo), Some(hi)) => hi > lo * T::lit(1.0 + UNUSABLE_SPREAD),
+                _ => true,
+            };
+        let load_kg = match self.hold_kg {
+            Some(h) if unusable => h.max(now),
+            _ => now,
+        };
         if !self.still {
             self.last_kg = Some(load_kg);
         }
@@ -510,5 +524,87 @@ mod tests {
                 assert!(est.load_kg >= floor - 1.0, "{k}: {} < {floor}", est.load_kg);
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod rest_tests {
+    use super::*;
+
+    fn at_rest() -> Quadratic<f64> {
+        Quadratic {
+            at_zero: 100_000.0,
+            per_kg: 10.0,
+            per_kg2: 0.0,
+        }
+    }
+
+    /// A 10 s-like raise from `from` to `to` degrees (accelerate 1 s, turn,
+    /// decelerate 1 s), then rest; the truth a held rope `truth` of the bank,
+    /// its load `w0` and from `add_at` s on `w1`. Returns (t, estimate, true
+    /// load) per cycle.
+    fn run(from: f64, to: f64, truth: usize, w0: f64, w1: f64, add_at: f64) -> Vec<(f64, f64, f64)> {
+        let g = SwingGeometry::<f64>::coles_930();
+        let mut bank = StaticLoadBank::new(g);
+        let dt = 0.01;
+        let span = (to - from).to_radians();
+        // Ramps of 1 s and 8 s at constant rate: rate = span / 9.
+        let rate_max = span / 9.0;
+        let (mut th, mut rate) = (from.to_radians(), 0.0);
+        let mut out = Vec::new();
+        for k in 0..2000 {
+            let t = f64::from(k) * dt;
+            let acc = if (1.0..2.0).contains(&t) {
+                rate_max
+            } else if (9.0..10.0).contains(&t) {
+                -rate_max
+            } else {
+                0.0
+            };
+            rate += acc * dt;
+            if t >= 10.0 {
+                rate = 0.0;
+            }
+            th += rate * dt;
+            bank.advance(th, rate, acc, dt);
+            let w = if t >= add_at { w1 } else { w0 };
+            let f = bank.ropes.factor(truth).unwrap();
+            let est = bank
+                .update(&LoadTerms {
+                    at_rest: at_rest(),
+                    force_n: 100_000.0 + 10.0 * w * f,
+                    angle_rad: th,
+                })
+                .unwrap();
+            out.push((t, est.load_kg, w));
+        }
+        out
+    }
+
+    #[test]
+    fn at_rest_after_a_raise_to_80_degrees_the_short_rope_does_not_collapse_the_weighing() {
+        for truth in 0..HELD_LENGTHS_M.len() {
+            let pts = run(40.0, 80.0, truth, 3000.0, 3000.0, 99.0);
+            let low = pts.iter().filter(|p| p.0 >= 11.0 && p.0 < 13.0).map(|p| p.1 / p.2).fold(f64::INFINITY, f64::min);
+            println!("rope {} m: lowest at rest 1-3 s after stopping {low:.3}", HELD_LENGTHS_M[truth]);
+            assert!(low > 0.95, "rope {truth}: {low}");
+        }
+    }
+
+    #[test]
+    #[ignore = "KNOWN GAP (as before the rest hold, same figures): a load added at rest while the load still swings from a move reads late; 3 t -> 4 t, 40°->60° / 60°->40° / 40°->80°: seen within 1 s only for 7.3 m (and 3 m, 4.7 m lowering) held ropes, after 1.4-5.9 s or not within 7 s for the others (W_fast is the lowest hypothesis, and a wrong rope's swing holds it down)"]
+    fn a_load_added_at_rest_after_a_move_is_seen_within_one_second() {
+        let mut late = Vec::new();
+        for (from, to) in [(40.0, 60.0), (60.0, 40.0), (40.0, 80.0)] {
+            for truth in 0..HELD_LENGTHS_M.len() {
+                let pts = run(from, to, truth, 3000.0, 4000.0, 13.0);
+                let seen = pts.iter().find(|p| p.0 >= 13.0 && p.1 >= 3900.0).map(|p| p.0 - 13.0);
+                println!("{from}->{to} rope {} m: 4 t seen after {seen:?} s", HELD_LENGTHS_M[truth]);
+                if seen.is_none_or(|s| s > 1.0) {
+                    late.push((from, to, truth, seen));
+                }
+            }
+        }
+        assert!(late.is_empty(), "{late:?}");
     }
 }
