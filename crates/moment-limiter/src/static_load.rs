@@ -625,10 +625,10 @@ mod rest_tests {
 
     #[test]
     fn at_rest_after_a_raise_to_80_degrees_the_short_rope_does_not_collapse_the_weighing() {
-        for truth in 0..HELD_LENGTHS_M.len() {
+        for (truth, length) in HELD_LENGTHS_M.iter().enumerate() {
             let pts = run(40.0, 80.0, truth, 3000.0, 3000.0, 99.0);
             let low = pts.iter().filter(|p| p.0 >= 11.0 && p.0 < 13.0).map(|p| p.1 / p.2).fold(f64::INFINITY, f64::min);
-            println!("rope {} m: lowest at rest 1-3 s after stopping {low:.3}", HELD_LENGTHS_M[truth]);
+            println!("rope {length} m: lowest at rest 1-3 s after stopping {low:.3}");
             assert!(low > 0.95, "rope {truth}: {low}");
         }
     }
@@ -638,10 +638,10 @@ mod rest_tests {
     fn a_load_added_at_rest_after_a_move_is_seen_within_one_second() {
         let mut late = Vec::new();
         for (from, to) in [(40.0, 60.0), (60.0, 40.0), (40.0, 80.0)] {
-            for truth in 0..HELD_LENGTHS_M.len() {
+            for (truth, length) in HELD_LENGTHS_M.iter().enumerate() {
                 let pts = run(from, to, truth, 3000.0, 4000.0, 13.0);
                 let seen = pts.iter().find(|p| p.0 >= 13.0 && p.1 >= 3900.0).map(|p| p.0 - 13.0);
-                println!("{from}->{to} rope {} m: 4 t seen after {seen:?} s", HELD_LENGTHS_M[truth]);
+                println!("{from}->{to} rope {length} m: 4 t seen after {seen:?} s");
                 if seen.is_none_or(|s| s > 1.0) {
                     late.push((from, to, truth, seen));
                 }
