@@ -7,12 +7,13 @@ mod common;
 use common::{bin, text};
 use std::path::{Path, PathBuf};
 
-/// An unloaded 10 s cycloidal run of `direction` with 1 s at rest before it.
-fn unloaded(dir: &Path, direction: &str, extra: &[&str]) -> PathBuf {
-    let log = dir.join(format!("unloaded_{direction}_{}.csv", extra.len()));
+/// A 100 Hz cycloidal `synth` run of `direction` with `load` kg over
+/// `duration` s, 1 s at rest before it, written to `dir/name`.
+fn synth_run(dir: &Path, name: &str, direction: &str, load: &str, duration: &str, seed: &str, extra: &[&str]) -> PathBuf {
+    let log = dir.join(name);
     let out = bin()
-        .args(["synth", "--load-kg", "0", "--duration", "10", "--profile", "cycloidal", "--rate-hz", "100", "--hold-s", "1"])
-        .args(["--direction", direction, "--seed", if direction == "up" { "1" } else { "2" }])
+        .args(["synth", "--load-kg", load, "--duration", duration, "--profile", "cycloidal", "--rate-hz", "100", "--hold-s", "1"])
+        .args(["--direction", direction, "--seed", seed])
         .args(extra)
         .arg("--out")
         .arg(&log)
@@ -20,6 +21,12 @@ fn unloaded(dir: &Path, direction: &str, extra: &[&str]) -> PathBuf {
         .unwrap();
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     log
+}
+
+/// An unloaded 10 s cycloidal run of `direction` with 1 s at rest before it.
+fn unloaded(dir: &Path, direction: &str, extra: &[&str]) -> PathBuf {
+    let seed = if direction == "up" { "1" } else { "2" };
+    synth_run(dir, &format!("unloaded_{direction}_{}.csv", extra.len()), direction, "0", "10", seed, extra)
 }
 
 fn calibrate(logs: &[&Path], out: &Path) -> std::process::Output {
@@ -114,18 +121,8 @@ fn refuses_swapped_pressures_a_load_and_a_missing_direction() {
 /// A run of the seal-friction crane below (a_up = 5 kN, b_up = 0.03; a_down
 /// = 3 kN, b_down = 0.02), thesis rope, with `load` kg, 1 s at rest first.
 fn seal_run(dir: &Path, direction: &str, load: &str, duration: &str, seed: &str) -> PathBuf {
-    let log = dir.join(format!("seal_{direction}_{load}.csv"));
-    let out = bin()
-        .args(["synth", "--load-kg", load, "--duration", duration, "--profile", "cycloidal", "--rate-hz", "100", "--hold-s", "1"])
-        .args(["--direction", direction, "--seed", seed])
-        .args(["--friction-law", "seal", "--friction-up-n", "5000", "--friction-up-b", "0.03"])
-        .args(["--friction-down-n", "3000", "--friction-down-b", "0.02"])
-        .arg("--out")
-        .arg(&log)
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
-    log
+    let law = ["--friction-law", "seal", "--friction-up-n", "5000", "--friction-up-b", "0.03", "--friction-down-n", "3000", "--friction-down-b", "0.02"];
+    synth_run(dir, &format!("seal_{direction}_{load}.csv"), direction, load, duration, seed, &law)
 }
 
 /// The learned friction's error (N) at piston force `f` per direction
