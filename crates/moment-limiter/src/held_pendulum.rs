@@ -73,7 +73,7 @@ pub struct BoomTip<T> {
     pub accel_y: T,
     /// tan θ of the boom angle.
     pub tan_angle: T,
-    /// Number of sub-steps (≥ 1) and their length h (s, ≥ 0).
+    /// Number of sub-steps (≥ 1).
     pub sub_steps: u32,
     /// Length of each sub-step (s).
     pub h_s: T,

@@ -203,15 +203,12 @@ pub struct LoadTerms<T> {
     pub angle_rad: T,
 }
 
-/// One hypothesis: its swing observer and its slow average.
+/// One hypothesis: which rope, and its slow average.
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct Hypothesis<T> {
     /// A held rope's index in the bank's [`HeldRopes`]; `None` for the
-    /// paid-out rope, whose swing is `swing`.
+    /// paid-out rope, whose swing is the bank's `paid_out`.
     held: Option<usize>,
-    swing: SwingObserver<T>,
-    /// The paid-out rope's tan φ (a held rope's is its pendulum's).
-    tan_swing: T,
     /// The stages of the slow average W̄_k (kg); `None` while the
     /// hypothesis cannot weigh.
     slow_kg: Option<[T; SLOW_STAGES]>,
@@ -224,6 +221,9 @@ pub struct StaticLoadBank<T> {
     hypotheses: [Hypothesis<T>; HYPOTHESES],
     /// The held ropes' pendulums, advanced together.
     ropes: HeldRopes<T, { HELD_LENGTHS_M.len() }>,
+    /// The paid-out rope's swing observer and its tan φ now.
+    paid_out: SwingObserver<T>,
+    paid_out_tan_swing: T,
     dt_s: T,
     /// The smoothing stage of W_fast; `None` until the first load.
     fast_stage: Option<T>,
@@ -259,17 +259,14 @@ impl<T: Real> StaticLoadBank<T> {
     pub fn new(geometry: SwingGeometry<T>) -> Self {
         let make = |k: usize| {
             let held = k.checked_sub(1);
-            Hypothesis {
-                held,
-                swing: SwingObserver::new(geometry),
-                tan_swing: T::lit(0.0),
-                slow_kg: None,
-            }
+            Hypothesis { held, slow_kg: None }
         };
         Self {
             geometry,
             hypotheses: core::array::from_fn(make),
             ropes: HeldRopes::new(HELD_LENGTHS_M.map(T::lit), geometry.gravity_m_s2),
+            paid_out: SwingObserver::new(geometry),
+            paid_out_tan_swing: T::lit(0.0),
             dt_s: T::lit(0.0),
             fast_stage: None,
             moved: false,
@@ -294,15 +291,13 @@ impl<T: Real> StaticLoadBank<T> {
         self.slow_kg = None;
     }
 
-    /// Moves every paid-out-rope observer's tip to `angle_rad` keeping its
+    /// Moves the paid-out rope observer's tip to `angle_rad` keeping its
     /// swing relative to the tip (after the filters restarted at a new
     /// reading: the jump of the filtered angle is no motion of the boom).
     /// The held-rope pendulums are driven by the tip's acceleration, not its
     /// position, and need nothing.
     pub fn rebase(&mut self, angle_rad: T) {
-        for h in self.hypotheses.iter_mut() {
-            h.swing.rebase(angle_rad);
-        }
+        self.paid_out.rebase(angle_rad);
     }
 
     /// Forgets swing and averages (after a sensor fault broke the angle).
@@ -316,10 +311,7 @@ impl<T: Real> StaticLoadBank<T> {
     pub fn advance(&mut self, angle_rad: T, rate_rad_s: T, accel_rad_s2: T, dt_s: T) -> T {
         let tip = BoomTip::new(angle_rad.sin_cos_own(), self.geometry.boom_length_m, rate_rad_s, accel_rad_s2, dt_s);
         self.ropes.update(&tip);
-        // Hypothesis 0 is the paid-out rope (`new`), the only one with a swing observer of its own.
-        if let Some(paid_out) = self.hypotheses.first_mut() {
-            paid_out.tan_swing = paid_out.swing.update(angle_rad, dt_s);
-        }
+        self.paid_out_tan_swing = self.paid_out.update(angle_rad, dt_s);
         self.dt_s = if dt_s.is_finite() && dt_s > T::lit(0.0) {
             dt_s
         } else {
@@ -343,25 +335,23 @@ impl<T: Real> StaticLoadBank<T> {
             self.hold_kg = None;
         }
         self.still = still;
-        self.hypotheses.first().map_or(T::lit(0.0), |h| h.tan_swing)
+        self.paid_out_tan_swing
     }
 
-    /// The factor of hypothesis `h` at tan θ, and whether it can weigh (see
+    /// The factor of possible hypothesis `h` at tan θ, if it can weigh (see
     /// the module doc): motion only, never the force.
-    fn factor(&self, h: &Hypothesis<T>, tan_theta: T, tip_height_m: T) -> Option<T> {
+    fn factor(&self, h: &Hypothesis<T>, tan_theta: T) -> Option<T> {
         let lim = T::lit(MAX_TAN_SWING);
         let factor = match h.held {
-            // A held rope longer than the tip is high: the load would be
-            // below ground.
-            Some(i) if self.ropes.length_m(i)? > tip_height_m => return None,
             Some(i) => self.ropes.factor(i)?,
-            None => T::lit(1.0) + tan_theta * h.tan_swing.max(-lim).min(lim),
+            None => T::lit(1.0) + tan_theta * self.paid_out_tan_swing.max(-lim).min(lim),
         };
         (factor.is_finite() && factor >= T::lit(MIN_LOAD_FACTOR)).then_some(factor)
     }
 
     /// Whether hypothesis `h` is possible at all with the tip `tip_height_m`
-    /// high: a held rope no longer than the tip is high.
+    /// high: a held rope longer than the tip is high would hold its load
+    /// below ground.
     fn possible(&self, h: &Hypothesis<T>, tip_height_m: T) -> bool {
         match h.held {
             Some(i) => self.ropes.length_m(i).is_some_and(|l| l <= tip_height_m),
@@ -389,21 +379,24 @@ impl<T: Real> StaticLoadBank<T> {
         // agreement among fewer says nothing (one alone always agrees).
         let mut all_weigh = true;
         for (slot, h) in factors.iter_mut().zip(self.hypotheses.iter()) {
-            *slot = self.factor(h, tan_theta, tip_height);
-            if let Some(f) = *slot {
-                f_lo = Some(f_lo.map_or(f, |l: T| l.min(f)));
-                f_hi = Some(f_hi.map_or(f, |h: T| h.max(f)));
-            } else if self.possible(h, tip_height) {
-                all_weigh = false;
+            if !self.possible(h, tip_height) {
+                continue;
+            }
+            *slot = self.factor(h, tan_theta);
+            match *slot {
+                Some(f) => {
+                    f_lo = Some(f_lo.map_or(f, |l: T| l.min(f)));
+                    f_hi = Some(f_hi.map_or(f, |h: T| h.max(f)));
+                }
+                None => all_weigh = false,
             }
         }
-        let agree = !self.moved
-            || self.still
-                && all_weigh
-                && match (f_lo, f_hi) {
-                    (Some(lo), Some(hi)) => hi <= lo * T::lit(1.0 + AGREEMENT),
-                    _ => false,
-                };
+        // Every possible rope weighs and their factors are within `spread`
+        // of each other.
+        let within = |spread: f64| {
+            all_weigh && matches!((f_lo, f_hi), (Some(lo), Some(hi)) if hi <= lo * T::lit(1.0 + spread))
+        };
+        let agree = !self.moved || self.still && within(AGREEMENT);
         let mut fast: Option<T> = None;
         let still = self.still;
         let prev_slow = self.slow_kg;
@@ -478,11 +471,7 @@ impl<T: Real> StaticLoadBank<T> {
         let now = slow.map_or(fast, |s| s.max(fast));
         // The force cannot weigh while a possible rope cannot or the ropes'
         // factors spread by more than [`UNUSABLE_SPREAD`].
-        let unusable = !all_weigh
-            || match (f_lo, f_hi) {
-                (Some(lo), Some(hi)) => hi > lo * T::lit(1.0 + UNUSABLE_SPREAD),
-                _ => true,
-            };
+        let unusable = !within(UNUSABLE_SPREAD);
         let load_kg = match self.hold_kg {
             Some(h) if unusable => h.max(now),
             _ => now,
