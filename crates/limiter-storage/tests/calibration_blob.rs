@@ -8,14 +8,16 @@ mod common;
 use common::{layout, CutFlash};
 use limiter_storage::calibration_blob::{
     decode_calibration, encode_calibration, load_calibration, CalibrationBlobError, BLOB_FORMAT,
-    BLOB_FORMAT_1, BLOB_LEN, BLOB_LEN_1, BLOB_MAGIC,
+    BLOB_FORMAT_1, BLOB_FORMAT_2, BLOB_LEN, BLOB_LEN_1, BLOB_LEN_2, BLOB_MAGIC,
 };
 use limiter_storage::crc::crc32;
 use limiter_storage::store::{Key, Store};
 use moment_limiter::tools::config_file::{
     calibration_from_values, calibration_values, hostile, parse_calibration,
-    CalibrationFileError, CALIBRATION_KEYS, CALIBRATION_VERSION, CALIBRATION_VERSION_1, V1_KEYS,
+    CalibrationFileError, CALIBRATION_KEYS, CALIBRATION_VERSION, CALIBRATION_VERSION_1,
+    CALIBRATION_VERSION_2, KEY_COUNT, V1_KEYS, V2_KEYS,
 };
+use moment_limiter::cycle::DEFAULT_ANGLE_SENSOR_LAG_S;
 use moment_limiter::load_estimate::Calibration;
 
 /// A blob with any values and versions and a correct CRC: what a buggy or
@@ -33,7 +35,7 @@ fn raw_blob(values: &[f64], format: u16, schema: u16) -> Vec<u8> {
     b
 }
 
-fn values(c: &Calibration<f64>) -> [f64; 8] {
+fn values(c: &Calibration<f64>) -> [f64; KEY_COUNT] {
     calibration_values(c)
 }
 
@@ -50,17 +52,66 @@ fn json_to_blob_to_the_same_calibration_in_f64_and_f32() {
         let cal = parse_calibration::<f64>(text.as_bytes()).unwrap();
         let blob = encode_calibration(&cal).unwrap();
         assert_eq!(blob.len(), BLOB_LEN);
-        assert_eq!(BLOB_LEN, 76);
-        assert_eq!(decode_calibration::<f64>(&blob).unwrap(), cal);
+        assert_eq!(BLOB_LEN, 84);
+        // A file without a lag (the example is of schema 1) is stored with
+        // the standard configuration's lag, what the limiter used for it.
+        let with_lag = |c: Calibration<f64>| Calibration {
+            angle_sensor_lag_s: c.angle_sensor_lag_s.or(Some(DEFAULT_ANGLE_SENSOR_LAG_S)),
+            ..c
+        };
+        assert_eq!(decode_calibration::<f64>(&blob).unwrap(), with_lag(cal));
         // The board's f32 calibration is the one the JSON reader gives in f32.
+        let c32 = parse_calibration::<f32>(text.as_bytes()).unwrap();
         assert_eq!(
             decode_calibration::<f32>(&blob).unwrap(),
-            parse_calibration::<f32>(text.as_bytes()).unwrap()
+            Calibration {
+                angle_sensor_lag_s: c32.angle_sensor_lag_s.or(Some(DEFAULT_ANGLE_SENSOR_LAG_S as f32)),
+                ..c32
+            }
         );
         // And the raw writer agrees with the encoder byte for byte.
         let raw = raw_blob(&values(&cal), BLOB_FORMAT, CALIBRATION_VERSION as u16);
         assert_eq!(raw, blob.to_vec());
     }
+}
+
+#[test]
+fn a_format_2_blob_still_decodes_without_a_lag() {
+    // What a board calibrated before the lag was learned holds: 76 bytes, schema 2.
+    let v2 = parse_calibration::<f64>(hostile::GOOD_V2.as_bytes()).unwrap();
+    assert_eq!(v2.angle_sensor_lag_s, None);
+    assert!(v2.friction_up_per_force > 0.0);
+    let blob = raw_blob(&values(&v2)[..V2_KEYS], BLOB_FORMAT_2, CALIBRATION_VERSION_2 as u16);
+    assert_eq!((blob.len(), BLOB_LEN_2), (76, 76));
+    assert_eq!(decode_calibration::<f64>(&blob).unwrap(), v2);
+    assert_eq!(
+        decode_calibration::<f32>(&blob).unwrap(),
+        parse_calibration::<f32>(hostile::GOOD_V2.as_bytes()).unwrap()
+    );
+    // Its bounds are enforced as in format 3.
+    let mut bad = values(&v2);
+    bad[6] = 0.5;
+    let e = decode_calibration::<f32>(&raw_blob(&bad[..V2_KEYS], BLOB_FORMAT_2, 2)).unwrap_err();
+    assert_eq!((e.code(), e.detail()), (8, 6), "{e:?}");
+    // The length and the versions must agree.
+    assert_eq!(
+        decode_calibration::<f32>(&raw_blob(&values(&v2)[..V2_KEYS], BLOB_FORMAT, 2)),
+        Err(CalibrationBlobError::Format(BLOB_FORMAT))
+    );
+    assert_eq!(
+        decode_calibration::<f32>(&raw_blob(&values(&v2)[..V2_KEYS], BLOB_FORMAT_2, 3)),
+        Err(CalibrationBlobError::SchemaVersion(3))
+    );
+    assert_eq!(
+        decode_calibration::<f32>(&raw_blob(&values(&v2), BLOB_FORMAT_2, 2)),
+        Err(CalibrationBlobError::Format(BLOB_FORMAT_2))
+    );
+    // Stored by the previous firmware under store version 2: the board loads it.
+    let mut store = Store::new(CutFlash::<4>::new(), layout());
+    store.write_blob(Key::Calibration, BLOB_FORMAT_2, &blob).unwrap();
+    let (back, crc) = load_calibration::<f64, _>(&mut store).unwrap();
+    assert_eq!(back, v2);
+    assert_eq!(crc, crc32(&blob));
 }
 
 #[test]
@@ -170,7 +221,7 @@ fn every_bound_of_the_schema_is_enforced_by_the_blob_decoder_as_by_the_json_read
                 // The encoder refuses to write it in the first place.
                 let mut cv = values(&good());
                 cv[k] = v;
-                let cal: Calibration<f64> = calibration_from_values(&cv);
+                let cal: Calibration<f64> = calibration_from_values(&cv, KEY_COUNT);
                 assert!(
                     encode_calibration(&cal).is_err(),
                     "{} = {v} encoded",
@@ -209,7 +260,7 @@ fn corrupt_truncated_and_foreign_blobs_are_refused() {
         }
     }
     // Wrong lengths.
-    for n in [0, 4, BLOB_LEN_1 - 1, BLOB_LEN_1 + 1, BLOB_LEN - 1] {
+    for n in [0, 4, BLOB_LEN_1 - 1, BLOB_LEN_1 + 1, BLOB_LEN_2 - 1, BLOB_LEN_2 + 1, BLOB_LEN - 1] {
         assert_eq!(
             decode_calibration::<f32>(&blob[..n]),
             Err(CalibrationBlobError::Length(n))

@@ -160,6 +160,11 @@ pub enum Friction {
 /// a fifth of the force is worn out, and 1 ± b stays far from 0.
 pub const MAX_PER_FORCE: f64 = 0.2;
 
+/// Longest angle-sensor lag a calibration may hold (s): a pendulum or
+/// potentiometer lagging the boom by half a second misreads a 10 s move by
+/// 4°; it is broken or mounted wrong, not something to correct for.
+pub const MAX_ANGLE_SENSOR_LAG_S: f64 = 0.5;
+
 /// What `crane-sim calibrate` learns (and a technician may adjust).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Calibration<T> {
@@ -181,6 +186,11 @@ pub struct Calibration<T> {
     /// Zero offset of the pendulum (degrees), subtracted from the reading
     /// after its range check.
     pub angle_offset_deg: T,
+    /// The angle sensor's lag as calibrated (s, first-order equivalent; see
+    /// [`crate::calibration`]): the limiter aligns force and angle with it.
+    /// `None` (no calibration, or a file of schema version 1 or 2): the
+    /// configured [`crate::cycle::LimiterConfig::angle_sensor_lag_s`].
+    pub angle_sensor_lag_s: Option<T>,
 }
 
 impl<T: Real> Calibration<T> {
@@ -196,6 +206,7 @@ impl<T: Real> Calibration<T> {
             p1_offset_bar: z,
             p2_offset_bar: z,
             angle_offset_deg: z,
+            angle_sensor_lag_s: None,
         }
     }
 
@@ -216,6 +227,9 @@ impl<T: Real> Calibration<T> {
             && [self.friction_up_per_force, self.friction_down_per_force]
                 .iter()
                 .all(|b| b.is_finite() && *b >= T::lit(0.0) && *b <= T::lit(MAX_PER_FORCE))
+            && self
+                .angle_sensor_lag_s
+                .is_none_or(|l| l.is_finite() && l >= T::lit(0.0) && l <= T::lit(MAX_ANGLE_SENSOR_LAG_S))
     }
 
     /// The friction law (a, b) of a direction of motion (N, –), or `None`

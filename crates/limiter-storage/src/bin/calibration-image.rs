@@ -166,8 +166,16 @@ mod tests {
             events: 0..0,
         };
         let mut store = Store::new(RamFlash(image), layout);
-        assert_eq!(load_calibration::<f64, _>(&mut store).unwrap().0, cal);
+        // The example is of schema 1 (no lag): stored with the standard
+        // configuration's lag, what the limiter used for it.
+        let lag = moment_limiter::cycle::DEFAULT_ANGLE_SENSOR_LAG_S;
+        assert_eq!(cal.angle_sensor_lag_s, None);
+        let stored = moment_limiter::load_estimate::Calibration { angle_sensor_lag_s: Some(lag), ..cal };
+        assert_eq!(load_calibration::<f64, _>(&mut store).unwrap().0, stored);
         let cal32 = parse_calibration::<f32>(text.as_bytes()).unwrap();
-        assert_eq!(load_calibration::<f32, _>(&mut store).unwrap().0, cal32);
+        assert_eq!(
+            load_calibration::<f32, _>(&mut store).unwrap().0,
+            moment_limiter::load_estimate::Calibration { angle_sensor_lag_s: Some(lag as f32), ..cal32 }
+        );
     }
 }

@@ -31,6 +31,10 @@ impl fmt::Display for ConfigError {
     }
 }
 
+/// The angle sensor's lag of the thesis crane's recorder (s): a pendulum of
+/// 2 Hz, ζ = 0.7, lags a steady rate by 2ζ/ω_n = 2·0.7/(2π·2) = 0.1114 s.
+pub const DEFAULT_ANGLE_SENSOR_LAG_S: f64 = 2.0 * 0.7 / (2.0 * core::f64::consts::PI * 2.0);
+
 /// Everything the limiter is configured with (constant while it runs).
 #[derive(Debug, Clone, PartialEq)]
 pub struct LimiterConfig<T> {
@@ -48,7 +52,9 @@ pub struct LimiterConfig<T> {
     /// Lag of the angle sensor behind the boom for a steady rate (s): for a
     /// pendulum potentiometer of natural frequency ω_n and damping ζ, 2ζ/ω_n
     /// (the sensor's data; see [`super::Limiter`] "Time alignment"). 0 for a sensor
-    /// without lag.
+    /// without lag. A calibration that holds a lag
+    /// ([`Calibration::angle_sensor_lag_s`]) overrides it
+    /// ([`Self::effective_angle_sensor_lag_s`]).
     pub angle_sensor_lag_s: T,
     /// Time constant (s) with which the friction of the last motion is taken
     /// to leave the force once the boom is still (the seals release; see
@@ -93,7 +99,7 @@ impl<T: Real> LimiterConfig<T> {
             filter_hz: T::lit(1.2),
             filter_stages: 4,
             direction: DirectionThresholds::standard(),
-            angle_sensor_lag_s: T::lit(2.0 * 0.7 / (2.0 * core::f64::consts::PI * 2.0)),
+            angle_sensor_lag_s: T::lit(DEFAULT_ANGLE_SENSOR_LAG_S),
             seal_release_s: T::lit(0.5),
             swing: Some(SwingGeometry::coles_930()),
             capacity: Capacity::standard(),
@@ -103,6 +109,12 @@ impl<T: Real> LimiterConfig<T> {
             clock: ClockConfig::standard(),
             negative_load: NegativeLoadBound::standard(),
         }
+    }
+
+    /// The angle sensor's lag the limiter aligns with (s): the
+    /// calibration's, if it holds one, else the configured default.
+    pub fn effective_angle_sensor_lag_s(&self) -> T {
+        self.calibration.angle_sensor_lag_s.unwrap_or(self.angle_sensor_lag_s)
     }
 
     /// Checks every part.

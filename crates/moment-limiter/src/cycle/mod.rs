@@ -40,7 +40,9 @@ pub mod config;
 pub mod report;
 mod signal_chain;
 
-pub use config::{ConfigError, LimiterConfig, EVENT_LOG_LEN, UTILIZATION_CEILING};
+pub use config::{
+    ConfigError, LimiterConfig, DEFAULT_ANGLE_SENSOR_LAG_S, EVENT_LOG_LEN, UTILIZATION_CEILING,
+};
 pub use report::{Estimate, StepReport};
 
 use crane_model::loads::load_model::{CycleQuery, HookLoadModel};
@@ -126,8 +128,9 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         config.validate()?;
         Ok(Self {
             monitor: PlausibilityMonitor::new(config.plausibility),
-            force_lag: (config.angle_sensor_lag_s > T::lit(0.0))
-                .then(|| LowPass::new(T::lit(1.0) / (T::two_pi() * config.angle_sensor_lag_s), 1)),
+            force_lag: (config.effective_angle_sensor_lag_s() > T::lit(0.0)).then(|| {
+                LowPass::new(T::lit(1.0) / (T::two_pi() * config.effective_angle_sensor_lag_s()), 1)
+            }),
             force_filter: LowPass::new(config.filter_hz, config.filter_stages),
             static_friction_share: T::lit(1.0),
             since_restart_s: None,

@@ -136,7 +136,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             angle_f,
             rate_f,
             accel_f,
-            self.config.angle_sensor_lag_s + self.force_filter.delay_s(dt_s),
+            self.config.effective_angle_sensor_lag_s() + self.force_filter.delay_s(dt_s),
         );
         let to_rad = T::pi() / T::lit(180.0);
         let boom = BoomState {

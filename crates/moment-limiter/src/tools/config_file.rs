@@ -2,7 +2,7 @@
 //! writer, `no_std` and without a heap, shared by `crane-sim` and the
 //! firmware (SPEC §4.9) so the two cannot disagree about a file.
 //!
-//! ## Schema, version 2 (version 1 still read)
+//! ## Schema, version 3 (versions 1 and 2 still read)
 //!
 //! One JSON object; **every key is required, no other key is allowed**, each
 //! value is a JSON number within the bounds below (finite; the bounds are
@@ -11,7 +11,7 @@
 //!
 //! | key | unit | bounds | why |
 //! |---|---|---|---|
-//! | `version` | — | 2 (or 1) | the schema version of the file |
+//! | `version` | — | 3 (or 2, 1) | the schema version of the file |
 //! | `friction_up_n` | N | 0 … 40 000 | constant part a of the cylinder's seal friction luffing up: ≤ 5 % of the 831 kN the cylinder exerts at 200 bar |
 //! | `friction_down_n` | N | 0 … 40 000 | the same, luffing down |
 //! | `force_offset_n` | N | −25 000 … 25 000 | zero-load force offset: ≤ 3 % of 831 kN (both transducers' ±2 % zero tolerance, 16.6 kN, plus the model's error at W = 0) |
@@ -20,12 +20,19 @@
 //! | `angle_offset_deg` | ° | −5 … 5 | zero of the pendulum: the 5° margin of its −5°…95° range |
 //! | `friction_up_per_force` | — | 0 … 0.2 | pressure-proportional part b of the seal friction luffing up (friction = a + b·\|F\|, [`crate::load_estimate`]): a seal taking a fifth of the force is worn out |
 //! | `friction_down_per_force` | — | 0 … 0.2 | the same, luffing down |
+//! | `angle_sensor_lag_s` | s | 0 … 0.5 | the angle sensor's lag behind the boom (first-order equivalent, [`crate::calibration`]; a pendulum's 2ζ/ω_n): half a second misreads a 10 s move by 4°, a broken or badly mounted sensor |
 //!
 //! **Version 1** files (written before the seal law) have the first six
 //! keys only and read as b = 0 (constant friction per direction), exactly
 //! as they were applied before; a version-1 file that holds a `*_per_force`
-//! key is refused (that key is not in version 1). The writer writes
-//! version 2.
+//! key is refused (that key is not in version 1). **Version 2** files
+//! (written before the lag was learned) have the first eight keys and read
+//! with no lag ([`Calibration::angle_sensor_lag_s`] `None`): the limiter
+//! aligns with its configured lag, exactly as it did when they were
+//! written. A key a file's version does not have is refused. The writer
+//! writes version 3; a calibration without a lag is written with the
+//! standard configuration's lag ([`crate::cycle::DEFAULT_ANGLE_SENSOR_LAG_S`],
+//! what the limiter used for it).
 //!
 //! A file is refused with an error that names the key and, for a value out
 //! of bounds, the bound and its reason: an empty object, an array, a value of
@@ -49,8 +56,18 @@ use crane_model::Real;
 use crate::load_estimate::Calibration;
 
 /// The schema version the writer writes (the reader also reads
-/// [`CALIBRATION_VERSION_1`]).
-pub const CALIBRATION_VERSION: u32 = 2;
+/// [`CALIBRATION_VERSION_1`] and [`CALIBRATION_VERSION_2`]).
+pub const CALIBRATION_VERSION: u32 = 3;
+
+/// The second schema version: the seal law, no lag (the first [`V2_KEYS`]
+/// keys of [`CALIBRATION_KEYS`]).
+pub const CALIBRATION_VERSION_2: u32 = 2;
+
+/// Number of keys of schema version 2 (the first ones of [`CALIBRATION_KEYS`]).
+pub const V2_KEYS: usize = 8;
+
+/// Number of keys of schema version 3.
+pub const KEY_COUNT: usize = 9;
 
 /// The first schema version: constant friction per direction (the first
 /// [`V1_KEYS`] keys of [`CALIBRATION_KEYS`]).
@@ -80,9 +97,11 @@ pub struct KeySpec {
     pub why: &'static str,
 }
 
-/// The values of schema version 2 (the first [`V1_KEYS`] are version 1's,
-/// in its order; see the module doc for the reasons).
-pub const CALIBRATION_KEYS: [KeySpec; 8] = [
+/// The values of schema version 3 (the first [`V1_KEYS`] are version 1's,
+/// the first [`V2_KEYS`] version 2's, in their order; see the module doc
+/// for the reasons). The one bound table: the JSON reader, the writer and
+/// the firmware's blob all check against it.
+pub const CALIBRATION_KEYS: [KeySpec; KEY_COUNT] = [
     KeySpec {
         key: "friction_up_n",
         unit: "N",
@@ -139,6 +158,13 @@ pub const CALIBRATION_KEYS: [KeySpec; 8] = [
         max: crate::load_estimate::MAX_PER_FORCE,
         why: "a seal taking a fifth of the piston force is worn out",
     },
+    KeySpec {
+        key: "angle_sensor_lag_s",
+        unit: "s",
+        min: 0.0,
+        max: crate::load_estimate::MAX_ANGLE_SENSOR_LAG_S,
+        why: "a sensor lagging half a second misreads a 10 s move by 4 degrees",
+    },
 ];
 
 /// Longest unknown key kept for the error message (longer ones are cut).
@@ -160,8 +186,13 @@ pub enum CalibrationFileError {
     MissingKey(&'static str),
     /// A key the schema does not have (cut to [`KEY_ECHO_LEN`] bytes).
     UnknownKey(heapless::String<KEY_ECHO_LEN>),
-    /// A key of version 2 in a file that says version 1.
-    NotInVersion1(&'static str),
+    /// A key of a later version in a file that says an earlier one.
+    NotInVersion {
+        /// The key.
+        key: &'static str,
+        /// The version the file says.
+        version: u32,
+    },
     /// A key is given twice.
     DuplicateKey(&'static str),
     /// The value of this key is not a JSON number.
@@ -187,9 +218,9 @@ impl fmt::Display for CalibrationFileError {
             E::NotAnObject => f.write_str("expected one JSON object `{...}` of calibration keys"),
             E::MissingKey(k) => write!(f, "key `{k}` is missing (every key is required)"),
             E::UnknownKey(k) => write!(f, "key `{k}` is not in the calibration schema"),
-            E::NotInVersion1(k) => write!(
+            E::NotInVersion { key, version } => write!(
                 f,
-                "key `{k}` is not in calibration schema version 1: set \"{VERSION_KEY}\": \
+                "key `{key}` is not in calibration schema version {version}: set \"{VERSION_KEY}\": \
                  {CALIBRATION_VERSION} (and give every key of version {CALIBRATION_VERSION})"
             ),
             E::DuplicateKey(k) => write!(f, "key `{k}` is given twice"),
@@ -202,7 +233,7 @@ impl fmt::Display for CalibrationFileError {
             E::UnsupportedVersion(v) => write!(
                 f,
                 "key `{VERSION_KEY}` = {v}: this reader knows versions \
-                 {CALIBRATION_VERSION_1} and {CALIBRATION_VERSION}"
+                 {CALIBRATION_VERSION_1}, {CALIBRATION_VERSION_2} and {CALIBRATION_VERSION}"
             ),
             E::PreSchemaFile => write!(
                 f,
@@ -216,15 +247,28 @@ impl fmt::Display for CalibrationFileError {
 }
 
 /// Reads a calibration file (the bytes of `CAL.json`) against the schema
-/// (version 2, or version 1 read as b = 0).
+/// (version 3; version 2 read without a lag, version 1 also as b = 0).
 pub fn parse_calibration<T: Real>(text: &[u8]) -> Result<Calibration<T>, CalibrationFileError> {
-    read_object(text).map(|v| calibration_from_values(&v))
+    read_object(text).map(|(v, keys)| calibration_from_values(&v, keys))
+}
+
+/// The number of keys of a schema version, if the reader knows it.
+pub fn keys_of_version(version: u32) -> Option<usize> {
+    match version {
+        CALIBRATION_VERSION_1 => Some(V1_KEYS),
+        CALIBRATION_VERSION_2 => Some(V2_KEYS),
+        CALIBRATION_VERSION => Some(KEY_COUNT),
+        _ => None,
+    }
 }
 
 /// The calibration of the values of [`CALIBRATION_KEYS`], in its order
-/// (checked by the caller), converted to `T`.
-pub fn calibration_from_values<T: Real>(values: &[f64; 8]) -> Calibration<T> {
-    let [fu, fd, fo, p1, p2, a, bu, bd] = *values;
+/// (checked by the caller), converted to `T`; only the first `keys` are
+/// the file's (its version's), the others take what that version meant:
+/// b = 0 (version 1) and no lag (versions 1 and 2).
+pub fn calibration_from_values<T: Real>(values: &[f64; KEY_COUNT], keys: usize) -> Calibration<T> {
+    let [fu, fd, fo, p1, p2, a, bu, bd, lag] = *values;
+    let (bu, bd) = if keys > V1_KEYS { (bu, bd) } else { (0.0, 0.0) };
     Calibration {
         friction_up_n: T::lit(fu),
         friction_down_n: T::lit(fd),
@@ -234,6 +278,7 @@ pub fn calibration_from_values<T: Real>(values: &[f64; 8]) -> Calibration<T> {
         p1_offset_bar: T::lit(p1),
         p2_offset_bar: T::lit(p2),
         angle_offset_deg: T::lit(a),
+        angle_sensor_lag_s: (keys > V2_KEYS).then(|| T::lit(lag)),
     }
 }
 
@@ -247,7 +292,7 @@ pub fn check_calibration(cal: &Calibration<f64>) -> Result<(), CalibrationFileEr
     Ok(())
 }
 
-/// Writes `cal` as a schema-version-2 file (one key per line, trailing
+/// Writes `cal` as a schema-version-3 file (one key per line, trailing
 /// newline). Call [`check_calibration`] first: this writes any value.
 pub fn write_calibration_json<W: Write>(w: &mut W, cal: &Calibration<f64>) -> fmt::Result {
     write!(w, "{{\n  \"{VERSION_KEY}\": {CALIBRATION_VERSION}")?;
@@ -259,8 +304,9 @@ pub fn write_calibration_json<W: Write>(w: &mut W, cal: &Calibration<f64>) -> fm
     w.write_str("\n}\n")
 }
 
-/// The values of `cal` in the order of [`CALIBRATION_KEYS`].
-pub fn calibration_values(cal: &Calibration<f64>) -> [f64; 8] {
+/// The values of `cal` in the order of [`CALIBRATION_KEYS`] (no lag: the
+/// standard configuration's, [`crate::cycle::DEFAULT_ANGLE_SENSOR_LAG_S`]).
+pub fn calibration_values(cal: &Calibration<f64>) -> [f64; KEY_COUNT] {
     [
         cal.friction_up_n,
         cal.friction_down_n,
@@ -270,6 +316,8 @@ pub fn calibration_values(cal: &Calibration<f64>) -> [f64; 8] {
         cal.angle_offset_deg,
         cal.friction_up_per_force,
         cal.friction_down_per_force,
+        cal.angle_sensor_lag_s
+            .unwrap_or(crate::cycle::DEFAULT_ANGLE_SENSOR_LAG_S),
     ]
 }
 
@@ -296,10 +344,11 @@ struct Findings {
     version_error: Option<CalibrationFileError>,
     unknown: Option<CalibrationFileError>,
     value_error: Option<CalibrationFileError>,
-    values: [Option<f64>; 8],
+    values: [Option<f64>; KEY_COUNT],
 }
 
-fn read_object(text: &[u8]) -> Result<[f64; 8], CalibrationFileError> {
+/// The values and how many keys the file's version has.
+fn read_object(text: &[u8]) -> Result<([f64; KEY_COUNT], usize), CalibrationFileError> {
     let mut c = Cursor {
         s: text.strip_prefix("\u{feff}".as_bytes()).unwrap_or(text),
         i: 0,
@@ -353,7 +402,10 @@ impl Findings {
                 }
             };
             self.version = Some(v);
-            if v == f64::from(CALIBRATION_VERSION) || v == f64::from(CALIBRATION_VERSION_1) {
+            if [CALIBRATION_VERSION, CALIBRATION_VERSION_2, CALIBRATION_VERSION_1]
+                .iter()
+                .any(|k| v == f64::from(*k))
+            {
                 return Ok(());
             }
             if !v.is_nan() {
@@ -395,7 +447,7 @@ impl Findings {
         Ok(())
     }
 
-    fn finish(self) -> Result<[f64; 8], CalibrationFileError> {
+    fn finish(self) -> Result<([f64; KEY_COUNT], usize), CalibrationFileError> {
         use CalibrationFileError as E;
         let Some(version) = self.version else {
             return Err(if self.values.iter().any(Option::is_some) {
@@ -407,19 +459,22 @@ impl Findings {
         if let Some(e) = self.version_error.or(self.unknown) {
             return Err(e);
         }
-        let v1 = version == f64::from(CALIBRATION_VERSION_1);
-        if v1 {
-            // The keys version 1 did not have are not in a version-1 file.
-            for (v, spec) in self.values.iter().zip(CALIBRATION_KEYS.iter()).skip(V1_KEYS) {
-                if v.is_some() {
-                    return Err(E::NotInVersion1(spec.key));
-                }
+        // A known version (else `version_error` above).
+        let (version, keys) = [CALIBRATION_VERSION_1, CALIBRATION_VERSION_2, CALIBRATION_VERSION]
+            .iter()
+            .find(|k| version == f64::from(**k))
+            .and_then(|k| Some((*k, keys_of_version(*k)?)))
+            .ok_or(E::UnsupportedVersion(version))?;
+        // The keys a version did not have are not in its files.
+        for (v, spec) in self.values.iter().zip(CALIBRATION_KEYS.iter()).skip(keys) {
+            if v.is_some() {
+                return Err(E::NotInVersion { key: spec.key, version });
             }
         }
         if let Some(e) = self.value_error {
             return Err(e);
         }
-        let mut out = [0.0; 8];
+        let mut out = [0.0; KEY_COUNT];
         for (k, ((o, v), spec)) in out
             .iter_mut()
             .zip(self.values)
@@ -428,12 +483,12 @@ impl Findings {
         {
             *o = match v {
                 Some(v) => v,
-                // Version 1: constant friction, b = 0.
-                None if v1 && k >= V1_KEYS => 0.0,
+                // Not in this version: its meaning is `calibration_from_values`'s.
+                None if k >= keys => 0.0,
                 None => return Err(E::MissingKey(spec.key)),
             };
         }
-        Ok(out)
+        Ok((out, keys))
     }
 }
 
@@ -590,8 +645,15 @@ impl<'a> Cursor<'a> {
 pub mod hostile {
     use super::CALIBRATION_KEYS;
 
-    /// A valid file of schema version 2 (the base the hostile cases alter).
-    pub const GOOD: &str = r#"{"version": 2, "friction_up_n": 10011.5, "friction_down_n": 9000,
+    /// A valid file of schema version 3 (the base the hostile cases alter).
+    pub const GOOD: &str = r#"{"version": 3, "friction_up_n": 10011.5, "friction_down_n": 9000,
+        "force_offset_n": -1932.4, "p1_offset_bar": 0.5, "p2_offset_bar": -0.25,
+        "angle_offset_deg": 0.0, "friction_up_per_force": 0.025,
+        "friction_down_per_force": 0.0125, "angle_sensor_lag_s": 0.2}"#;
+
+    /// A valid file of schema version 2 (the seal law, no lag: read with
+    /// the configured lag).
+    pub const GOOD_V2: &str = r#"{"version": 2, "friction_up_n": 10011.5, "friction_down_n": 9000,
         "force_offset_n": -1932.4, "p1_offset_bar": 0.5, "p2_offset_bar": -0.25,
         "angle_offset_deg": 0.0, "friction_up_per_force": 0.025,
         "friction_down_per_force": 0.0125}"#;
@@ -640,9 +702,24 @@ pub mod hostile {
                 "`p1_offset_bar` is given twice",
             ),
             (
-                "version 3".into(),
-                with("version", Some("3")),
-                "`version` = 3: this reader knows versions 1 and 2",
+                "version 4".into(),
+                with("version", Some("4")),
+                "`version` = 4: this reader knows versions 1, 2 and 3",
+            ),
+            (
+                "version 2.5".into(),
+                with("version", Some("2.5")),
+                "`version` = 2.5: this reader knows versions 1, 2 and 3",
+            ),
+            (
+                "version 2 with the lag key".into(),
+                with("version", Some("2")),
+                "`angle_sensor_lag_s` is not in calibration schema version 2",
+            ),
+            (
+                "version 2 without version 2's keys".into(),
+                GOOD_V2.replace(",\n        \"friction_down_per_force\": 0.0125", ""),
+                "`friction_down_per_force` is missing",
             ),
             (
                 "version 1 with a seal-law key".into(),
@@ -684,6 +761,11 @@ pub mod hostile {
             cases.push((format!("{k} = 1e999"), with(k, Some("1e999")), "is outside"));
         }
         cases.push((
+            "angle_sensor_lag_s = 0.6 (a broken sensor)".into(),
+            with("angle_sensor_lag_s", Some("0.6")),
+            "key `angle_sensor_lag_s` = 0.6 is outside 0 ... 0.5 s",
+        ));
+        cases.push((
             "p1_offset_bar = 50 (the issue's case)".into(),
             with("p1_offset_bar", Some("50")),
             "key `p1_offset_bar` = 50 is outside -4 ... 4 bar (2 % of the 200 bar transducer span)",
@@ -707,12 +789,32 @@ mod tests {
         let mut text = String::new();
         write_calibration_json(&mut text, &c).unwrap();
         assert_eq!(parse_calibration::<f64>(text.as_bytes()).unwrap(), c);
-        assert!(text.starts_with("{\n  \"version\": 2,\n"), "{text}");
+        assert!(text.starts_with("{\n  \"version\": 3,\n"), "{text}");
         assert_eq!(c.friction_up_per_force, 0.025);
+        assert_eq!(c.angle_sensor_lag_s, Some(0.2));
         // BOM and f32.
         let bom = format!("\u{feff}{GOOD}");
         let c32 = parse_calibration::<f32>(bom.as_bytes()).unwrap();
         assert_eq!(c32.friction_up_n, 10011.5_f32);
+        assert_eq!(c32.angle_sensor_lag_s, Some(0.2_f32));
+    }
+
+    #[test]
+    fn a_version_2_file_reads_without_a_lag() {
+        use super::hostile::GOOD_V2;
+        let c2 = parse_calibration::<f64>(GOOD_V2.as_bytes()).unwrap();
+        let c3 = parse_calibration::<f64>(GOOD.as_bytes()).unwrap();
+        assert_eq!(c2, Calibration { angle_sensor_lag_s: None, ..c3 });
+        // The limiter then aligns with its configured lag.
+        let config = crate::cycle::LimiterConfig { calibration: c2, ..crate::cycle::LimiterConfig::standard() };
+        assert_eq!(config.effective_angle_sensor_lag_s(), crate::cycle::DEFAULT_ANGLE_SENSOR_LAG_S);
+        let config = crate::cycle::LimiterConfig { calibration: c3, ..config };
+        assert_eq!(config.effective_angle_sensor_lag_s(), 0.2);
+        // Re-written, it is a version-3 file with the standard lag.
+        let mut text = String::new();
+        write_calibration_json(&mut text, &c2).unwrap();
+        let back = parse_calibration::<f64>(text.as_bytes()).unwrap();
+        assert_eq!(back, Calibration { angle_sensor_lag_s: Some(crate::cycle::DEFAULT_ANGLE_SENSOR_LAG_S), ..c2 });
     }
 
     #[test]
@@ -744,14 +846,18 @@ mod tests {
             Calibration {
                 friction_up_per_force: 0.0,
                 friction_down_per_force: 0.0,
+                angle_sensor_lag_s: None,
                 ..c2
             }
         );
-        // Re-written, it is a version-2 file with b = 0.
+        // Re-written, it is a version-3 file with b = 0 and the standard lag.
         let mut text = String::new();
         write_calibration_json(&mut text, &c1).unwrap();
         assert!(text.contains("\"friction_up_per_force\": 0.0"), "{text}");
-        assert_eq!(parse_calibration::<f64>(text.as_bytes()).unwrap(), c1);
+        assert_eq!(
+            parse_calibration::<f64>(text.as_bytes()).unwrap(),
+            Calibration { angle_sensor_lag_s: Some(crate::cycle::DEFAULT_ANGLE_SENSOR_LAG_S), ..c1 }
+        );
     }
 
     #[test]
