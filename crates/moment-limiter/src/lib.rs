@@ -59,6 +59,7 @@ pub mod io;
 pub mod load_estimate;
 pub mod negative_load;
 pub mod piston_force;
+pub mod sensor_lag;
 pub mod state_machine;
 pub mod static_load;
 pub mod swing;

@@ -29,10 +29,11 @@ use std::io::{BufReader, Write as _};
 use std::path::{Path, PathBuf};
 
 use anyhow::Context as _;
-use moment_limiter::calibration::CalibrationLearner;
+use moment_limiter::calibration::{CalibrationLearner, SteadyMotion};
 use moment_limiter::cycle::{Limiter, LimiterConfig};
 use moment_limiter::fault::Fault;
-use moment_limiter::io::Measurement;
+use moment_limiter::io::{Frame, Measurement};
+use moment_limiter::sensor_lag::fit_lag;
 use moment_limiter::tools::log_format::LogParser;
 
 use moment_limiter::tools::config_file;
@@ -70,6 +71,13 @@ pub struct CalibrateArgs {
 const KNOWN_AT_REST: (f64, f64) = (0.05, 100.0);
 const KNOWN_IN_MOTION: (f64, f64) = (0.15, 200.0);
 
+/// One log, read and checked.
+struct Log {
+    name: String,
+    load_kg: f64,
+    frames: Vec<(u32, Frame<f64>)>,
+}
+
 /// One log, learned on its own.
 struct Run {
     name: String,
@@ -79,18 +87,15 @@ struct Run {
     measurements: Vec<Measurement<f64>>,
 }
 
-/// Runs a log through the limiter and its own learner.
-fn learn_log(path: &Path, load_kg: f64) -> anyhow::Result<Run> {
+/// Reads a log and checks it is a run of the stated load with the
+/// pressures the right way round.
+fn read_log(path: &Path, load_kg: f64) -> anyhow::Result<Log> {
     let name = path.display().to_string();
     let file = File::open(path).with_context(|| format!("cannot open log {name}"))?;
-    let mut limiter = Limiter::new(crate::model::thesis_model()?, LimiterConfig::standard())
-        .map_err(|e| anyhow::anyhow!("{e}"))?;
-    let mut learner = CalibrationLearner::<f64>::with_known_load(load_kg);
-    let mut measurements = Vec::new();
+    let mut frames = Vec::new();
     let mut parser = LogParser::<f64>::new();
     let mut reader = BufReader::new(file);
     let mut buf = Vec::new();
-    let mut faulted = 0u32;
     // Mean pressures of the log: the boom hangs on the piston side, so p1
     // far above p2 (p2 above p1: the columns are swapped).
     let (mut p1_sum, mut p2_sum, mut n_p) = (0.0f64, 0.0f64, 0u32);
@@ -124,18 +129,7 @@ fn learn_log(path: &Path, load_kg: f64) -> anyhow::Result<Run> {
         p1_sum += record.frame.p1_bar;
         p2_sum += record.frame.p2_bar;
         n_p += 1;
-        let report = limiter.step_frame(&record.frame);
-        // An implausibly negative load is the limiter's verdict on an
-        // uncalibrated estimate; the learner needs the measurement itself.
-        match (report.fault, report.measurement) {
-            (None | Some(Fault::ImplausibleLoad), Some(m)) => {
-                learner
-                    .observe(limiter.model(), &m)
-                    .map_err(|e| anyhow::anyhow!("{name}: line {}: model: {e}", record.line))?;
-                measurements.push(m);
-            }
-            _ => faulted += 1,
-        }
+        frames.push((record.line, record.frame));
     }
     parser
         .finish()
@@ -147,13 +141,47 @@ fn learn_log(path: &Path, load_kg: f64) -> anyhow::Result<Run> {
             "{name}: p1 (piston side) reads {p1:.1} bar on average and p2 (rod side) {p2:.1} bar: the boom hangs on the piston side, so p1_bar and p2_bar look swapped (check the wiring or the log's columns)"
         );
     }
+    Ok(Log { name, load_kg, frames })
+}
+
+/// Runs a log through the limiter, its angle sensor's lag taken as
+/// `lag_s`, and its own learner; `keep` keeps the measurements (for the
+/// residual pass) and warns of faulted samples.
+fn learn_log(log: &Log, lag_s: f64, keep: bool) -> anyhow::Result<Run> {
+    learn_log_with(log, lag_s, keep, SteadyMotion::standard())
+}
+
+fn learn_log_with(log: &Log, lag_s: f64, keep: bool, steady: SteadyMotion<f64>) -> anyhow::Result<Run> {
+    let name = &log.name;
+    let config = LimiterConfig { angle_sensor_lag_s: lag_s, ..LimiterConfig::standard() };
+    let mut limiter =
+        Limiter::new(crate::model::thesis_model()?, config).map_err(|e| anyhow::anyhow!("{e}"))?;
+    let mut learner = CalibrationLearner::<f64>::with_steady_motion(steady).loaded(log.load_kg);
+    let mut measurements = Vec::new();
+    let mut faulted = 0u32;
+    for (line, frame) in &log.frames {
+        let report = limiter.step_frame(frame);
+        // An implausibly negative load is the limiter's verdict on an
+        // uncalibrated estimate; the learner needs the measurement itself.
+        match (report.fault, report.measurement) {
+            (None | Some(Fault::ImplausibleLoad), Some(m)) => {
+                learner
+                    .observe(limiter.model(), &m)
+                    .map_err(|e| anyhow::anyhow!("{name}: line {line}: model: {e}"))?;
+                if keep {
+                    measurements.push(m);
+                }
+            }
+            _ => faulted += 1,
+        }
+    }
     learner.end_of_log();
-    if faulted > 0 {
+    if keep && faulted > 0 {
         eprintln!("warning: {name}: {faulted} samples with a sensor or model fault left out");
     }
     Ok(Run {
-        name,
-        load_kg,
+        name: name.clone(),
+        load_kg: log.load_kg,
         learner,
         measurements,
     })
@@ -182,12 +210,25 @@ fn known_loads(args: &CalibrateArgs) -> anyhow::Result<Vec<(f64, PathBuf)>> {
 /// Runs the subcommand; returns the exit code.
 pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
     let known = known_loads(&args)?;
-    let mut runs = Vec::new();
+    let mut logs = Vec::new();
     for path in &args.logs {
-        runs.push(learn_log(path, 0.0)?);
+        logs.push(read_log(path, 0.0)?);
     }
     for (w, path) in &known {
-        runs.push(learn_log(path, *w)?);
+        logs.push(read_log(path, *w)?);
+    }
+    // The angle sensor's lag: the one that leaves the least residual
+    // (moment_limiter::sensor_lag), over every run.
+    let lag = fit_lag(LimiterConfig::<f64>::standard().angle_sensor_lag_s, |lag_s| {
+        let mut all = CalibrationLearner::<f64>::new();
+        for log in &logs {
+            all.merge(&learn_log_with(log, lag_s, false, SteadyMotion::lag_search())?.learner);
+        }
+        anyhow::Ok(all.line_ssr())
+    })?;
+    let mut runs = Vec::new();
+    for log in &logs {
+        runs.push(learn_log(log, lag.lag_s, true)?);
     }
     let mut unloaded = CalibrationLearner::<f64>::new();
     for r in runs.iter().filter(|r| r.load_kg == 0.0) {
@@ -239,7 +280,10 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
         all.merge(l);
     }
     let learned = all.fit(min).map_err(too_few)?;
-    let cal = learned.calibration;
+    let cal = moment_limiter::load_estimate::Calibration {
+        angle_sensor_lag_s: Some(lag.lag_s),
+        ..learned.calibration
+    };
     let (samples_up, samples_down) = all.counts();
     // Only a file the reader (host and firmware) accepts is written.
     config_file::check_calibration(&cal).map_err(|e| {
@@ -266,12 +310,13 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
     let mut out = crate::stdout::stdout();
     writeln!(
         out,
-        "friction_up_n={:.1} friction_up_per_force={:.5} friction_down_n={:.1} friction_down_per_force={:.5} force_offset_n={:.1} samples_up={samples_up} samples_down={samples_down} -> {}",
+        "friction_up_n={:.1} friction_up_per_force={:.5} friction_down_n={:.1} friction_down_per_force={:.5} force_offset_n={:.1} angle_sensor_lag_s={:.3} samples_up={samples_up} samples_down={samples_down} -> {}",
         cal.friction_up_n,
         cal.friction_up_per_force,
         cal.friction_down_n,
         cal.friction_down_per_force,
         cal.force_offset_n,
+        lag.lag_s,
         args.out.display()
     )?;
     let runs_text = if known.is_empty() {
@@ -305,14 +350,37 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
             f.a_n, f.b, f.n, f.rms_n, mx
         )?;
     }
+    if lag.observable {
+        writeln!(
+            out,
+            "  angle sensor lag {:.3} s learned (first-order equivalent; residual rms {:.1} N, +{:.0} % at {:.2} s off, {:.1} N at the default {:.3} s)",
+            lag.lag_s,
+            lag.rms_n,
+            lag.rms_rise * 100.0,
+            moment_limiter::sensor_lag::LAG_PROBE_S,
+            lag.rms_at_default_n,
+            LimiterConfig::<f64>::standard().angle_sensor_lag_s
+        )?;
+    } else {
+        writeln!(
+            out,
+            "  angle sensor lag NOT observable (residual flat: +{:.1} % rms at {:.2} s from its minimum at {:.3} s, {} % needed): the default {:.3} s kept; give longer runs over a wider angle span",
+            lag.rms_rise * 100.0,
+            moment_limiter::sensor_lag::LAG_PROBE_S,
+            lag.best_s,
+            moment_limiter::sensor_lag::MIN_RMS_RISE * 100.0,
+            lag.lag_s
+        )?;
+    }
     writeln!(
         out,
-        "learned: friction law per direction, force offset ({}); not observable, left 0: p1/p2 zero offsets (a common offset is the force offset), pendulum offset, pendulum lag (not learned: the steady samples do not show it)",
+        "learned: friction law per direction, force offset ({}), angle sensor lag ({}); not observable, left 0: p1/p2 zero offsets (a common offset is the force offset), pendulum offset",
         if learned.offset_from_rest {
             "from the boom at rest"
         } else {
             "no rest samples: symmetric split of up and down"
-        }
+        },
+        if lag.observable { "from the residual's shape in motion" } else { "default kept" }
     )?;
     out.flush()?;
     Ok(0)
