@@ -362,8 +362,9 @@ impl Scenario {
 mod limiter_adapter {
     use super::synth_core::SynthRow;
     use crane_model::loads::thesis_modes::thesis_load_model_f32;
-    use moment_limiter::calibration::CalibrationLearner;
+    use moment_limiter::calibration::{CalibrationLearner, SteadyMotion};
     use moment_limiter::cycle::{Limiter, LimiterConfig};
+    use moment_limiter::sensor_lag::fit_lag;
     use moment_limiter::io::Frame;
     use moment_limiter::load_estimate::Calibration;
     use moment_limiter::clock::Ticks;
@@ -400,11 +401,12 @@ mod limiter_adapter {
         Frame { t, p1_bar: r.p1_bar as f32, p2_bar: r.p2_bar as f32, boom_angle_deg: r.boom_angle_deg as f32 }
     }
 
-    /// The calibration learned from unloaded up and down logs (as `crane-sim calibrate`).
-    pub fn calibrate(logs: &[&[SynthRow]]) -> anyhow::Result<CraneCalibration> {
-        let mut learner = CalibrationLearner::<f32>::new();
+    /// The learner of `logs` run through the limiter with the angle sensor's lag `lag_s`.
+    fn learn(logs: &[&[SynthRow]], lag_s: f32, steady: SteadyMotion<f32>) -> anyhow::Result<CalibrationLearner<f32>> {
+        let mut learner = CalibrationLearner::<f32>::with_steady_motion(steady);
         for rows in logs {
-            let mut lim = Limiter::new(thesis_load_model_f32(), LimiterConfig::standard()).map_err(|e| anyhow::anyhow!("{e}"))?;
+            let config = LimiterConfig { angle_sensor_lag_s: lag_s, ..LimiterConfig::standard() };
+            let mut lim = Limiter::new(thesis_load_model_f32(), config).map_err(|e| anyhow::anyhow!("{e}"))?;
             for r in rows.iter() {
                 let rep = lim.step_frame(&frame(r));
                 if let (None, Some(m)) = (rep.fault, rep.measurement) {
@@ -413,7 +415,20 @@ mod limiter_adapter {
             }
             learner.end_of_log();
         }
-        learner.finish(50).map_err(|e| anyhow::anyhow!("calibration: {e:?}"))
+        Ok(learner)
+    }
+
+    /// The calibration learned from unloaded up and down logs (as `crane-sim
+    /// calibrate`: the angle sensor's lag first, then the friction law with
+    /// it), and whether the lag was observable.
+    pub fn calibrate(logs: &[&[SynthRow]]) -> anyhow::Result<(CraneCalibration, bool)> {
+        let lag = fit_lag(LimiterConfig::<f32>::standard().angle_sensor_lag_s, |lag_s| {
+            Ok::<_, anyhow::Error>(learn(logs, lag_s, SteadyMotion::lag_search())?.line_ssr())
+        })?;
+        let cal = learn(logs, lag.lag_s, SteadyMotion::standard())?
+            .finish(50)
+            .map_err(|e| anyhow::anyhow!("calibration: {e:?}"))?;
+        Ok((Calibration { angle_sensor_lag_s: Some(lag.lag_s), ..cal }, lag.observable))
     }
 
     /// Replays `rows` through the limiter with `cal` (as `crane-sim replay`), one
@@ -845,10 +860,17 @@ struct CraneLaw {
     /// The same for the friction at the unloaded run's force (≈ 85 kN).
     up_error_at_85kn_n: f64,
     down_error_at_85kn_n: f64,
+    /// The angle sensor's synthesized lag (s): τ of a first-order sensor,
+    /// 2ζ/ω_n of the pendulum.
+    synth_lag_s: f64,
+    /// The lag the calibration learned (s; the default if not observable).
+    learned_lag_s: f64,
+    /// `false`: the runs did not show the lag and the default was kept.
+    lag_observable: bool,
 }
 
 impl CraneLaw {
-    fn new(crane: &Crane, cal: &CraneCalibration) -> Self {
+    fn new(crane: &Crane, (cal, lag_observable): &(CraneCalibration, bool)) -> Self {
         let f = |a: f32| f64::from(a);
         let err = |a: f64, b: f64, la: f64, lb: f64, at: f64| (la + lb * at) - (a + b * at);
         let (lua, lub, lda, ldb) = (f(cal.friction_up_n), f(cal.friction_up_per_force), f(cal.friction_down_n), f(cal.friction_down_per_force));
@@ -873,6 +895,13 @@ impl CraneLaw {
             down_error_at_300kn_n: err(c.friction_down_a_n, c.friction_down_b, lda, ldb, COMPARE_AT_N),
             up_error_at_85kn_n: err(c.friction_up_a_n, c.friction_up_b, lua, lub, 85_000.0),
             down_error_at_85kn_n: err(c.friction_down_a_n, c.friction_down_b, lda, ldb, 85_000.0),
+            synth_lag_s: if c.pendulum == "first-order" {
+                c.pendulum_tau_s
+            } else {
+                2.0 * c.pendulum_damping / (2.0 * std::f64::consts::PI * c.pendulum_hz)
+            },
+            learned_lag_s: cal.angle_sensor_lag_s.map_or(f64::NAN, f64::from),
+            lag_observable: *lag_observable,
         }
     }
 }
@@ -920,7 +949,7 @@ fn parse_shard(s: Option<&str>) -> Result<(usize, usize)> {
 }
 
 /// The unloaded up and down calibration runs of `crane` (10 s cycloidal 40°↔80°).
-fn calibrate_crane(model: &ThesisModel<f64>, crane: &Crane, options: &SimulationOptions, dt: f64) -> Result<CraneCalibration> {
+fn calibrate_crane(model: &ThesisModel<f64>, crane: &Crane, options: &SimulationOptions, dt: f64) -> Result<(CraneCalibration, bool)> {
     let mut logs = Vec::new();
     for (i, dir) in [Direction::Up, Direction::Down].into_iter().enumerate() {
         let mut m = Maneuver::thesis(0.0, 10.0, RampShape::Cycloidal, dir).map_err(|e| anyhow::anyhow!("{e}"))?;
@@ -960,7 +989,7 @@ fn run_campaign(args: &CampaignArgs, progress: bool) -> Result<(Summary, Vec<Str
     options.outputs = Outputs::PistonForce;
     let indices: Vec<usize> = (0..args.scenarios).filter(|i| i % n == k - 1).collect();
     let cranes: Vec<Crane> = (0..args.cranes.min(args.scenarios)).map(|i| Crane::new(args.seed, i)).collect();
-    let calibrations: Vec<CraneCalibration> = cranes.par_iter().map(|c| calibrate_crane(&model, c, &options, dt)).collect::<Result<_>>()?;
+    let calibrations: Vec<(CraneCalibration, bool)> = cranes.par_iter().map(|c| calibrate_crane(&model, c, &options, dt)).collect::<Result<_>>()?;
     let bar = if progress { indicatif::ProgressBar::new(indices.len() as u64) } else { indicatif::ProgressBar::hidden() };
     bar.set_style(
         indicatif::ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {pos}/{len} scenarios ({per_sec}, eta {eta})")
@@ -981,7 +1010,7 @@ fn run_campaign(args: &CampaignArgs, progress: bool) -> Result<(Summary, Vec<Str
             let sensors = SensorModel { seed: sc.noise_seed, ..crane.sensors };
             let rows = synth_core::synthesize(&samples, dt, 0.0, sc.load_kg, &sensors);
             let t2 = std::time::Instant::now();
-            let fault = limiter_adapter::replay(&calibrations[sc.crane], &rows, out)?;
+            let fault = limiter_adapter::replay(&calibrations[sc.crane].0, &rows, out)?;
             let t3 = std::time::Instant::now();
             let mut g = grade(&sc, &rows, out, &rated);
             g.first_fault = fault;
@@ -1092,12 +1121,13 @@ pub fn run(args: CampaignArgs) -> Result<u8> {
             let _ = writeln!(out, "\nrope {}, friction {}: {} scenarios", g.rope, g.friction, g.grades.scenarios);
             let _ = write_tally(&mut out, &g.grades);
         }
-        let _ = writeln!(out, "\ncalibration: friction law a + b·|F| per direction, synthesized -> learned (a in N)");
+        let _ = writeln!(out, "\ncalibration: friction law a + b·|F| per direction and angle sensor lag, synthesized -> learned (a in N, lag in s)");
         for l in &summary.calibrations {
             let _ = writeln!(
                 out,
-                "crane {:>3} {:<8} up {:>7.0} {:.4} -> {:>7.0} {:.4}   down {:>7.0} {:.4} -> {:>7.0} {:.4}   error at 300 kN up {:>+6.0} down {:>+6.0} N",
-                l.crane, l.friction, l.synth_up_a_n, l.synth_up_b, l.learned_up_a_n, l.learned_up_b, l.synth_down_a_n, l.synth_down_b, l.learned_down_a_n, l.learned_down_b, l.up_error_at_300kn_n, l.down_error_at_300kn_n
+                "crane {:>3} {:<8} up {:>7.0} {:.4} -> {:>7.0} {:.4}   down {:>7.0} {:.4} -> {:>7.0} {:.4}   error at 300 kN up {:>+6.0} down {:>+6.0} N   lag {:.3} -> {:.3}{}",
+                l.crane, l.friction, l.synth_up_a_n, l.synth_up_b, l.learned_up_a_n, l.learned_up_b, l.synth_down_a_n, l.synth_down_b, l.learned_down_a_n, l.learned_down_b, l.up_error_at_300kn_n, l.down_error_at_300kn_n,
+                l.synth_lag_s, l.learned_lag_s, if l.lag_observable { "" } else { " (not observable: default)" }
             );
         }
     }
