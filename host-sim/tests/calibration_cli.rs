@@ -146,7 +146,7 @@ fn learns_the_seal_law_from_unloaded_runs_and_better_with_a_test_weight() {
     assert!(stdout.contains("up   a=") && stdout.contains("down a=") && stdout.contains("residual rms="), "{stdout}");
     assert!(stdout.contains("not observable") && stdout.contains("pendulum"), "{stdout}");
     let j: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&cal).unwrap()).unwrap();
-    assert_eq!(j["version"], 2);
+    assert_eq!(j["version"], 3);
     // A constant law learned unloaded (≈ 87 kN) is off at a heavy lift's
     // 300 kN by b·213 kN: 6.4 kN up, 4.3 kN down.
     let (bu, bd) = (key(&j, "friction_up_per_force"), key(&j, "friction_down_per_force"));
@@ -230,6 +230,69 @@ fn refuses_a_known_load_run_that_is_not_of_its_stated_weight() {
     assert!(text(&out.stderr).contains("is not a weight in kg"), "{}", text(&out.stderr));
 }
 
+/// The first-order-equivalent lag a `synth` angle sensor has (s).
+const PENDULUM_2HZ_07_LAG_S: f64 = 2.0 * 0.7 / (2.0 * std::f64::consts::PI * 2.0);
+
+#[test]
+fn learns_the_angle_sensors_lag_from_unloaded_runs() {
+    // Unloaded 10 s runs 40°↔80° (4 °/s), both friction laws, first-order
+    // sensors of 0.05–0.3 s and the oil-damped pendulum (2 Hz, ζ 0.7). The
+    // limiter's default is the pendulum's 0.111 s: a 0.3 s sensor read
+    // with it takes 2 kN of lag as friction.
+    let dir = tempfile::tempdir().unwrap();
+    let sensors: [(&[&str], f64, f64); 5] = [
+        (&["--pendulum", "first-order", "--pendulum-tau-s", "0.05"], 0.05, 0.02),
+        (&["--pendulum", "first-order", "--pendulum-tau-s", "0.1"], 0.1, 0.02),
+        (&["--pendulum", "first-order", "--pendulum-tau-s", "0.2"], 0.2, 0.02),
+        (&["--pendulum", "first-order", "--pendulum-tau-s", "0.3"], 0.3, 0.02),
+        // Its ramp response is a little quicker than a first-order lag's.
+        (&["--pendulum", "second-order"], PENDULUM_2HZ_07_LAG_S, 0.025),
+    ];
+    let laws: [&[&str]; 2] = [
+        &[],
+        &["--friction-law", "seal", "--friction-up-n", "5000", "--friction-up-b", "0.03", "--friction-down-n", "3000", "--friction-down-b", "0.02"],
+    ];
+    let mut table = String::from("law       synthesized  learned  (s)\n");
+    let mut worst = 0.0f64;
+    for (k, law) in laws.iter().enumerate() {
+        for (i, (sensor, truth, tol)) in sensors.iter().enumerate() {
+            let extra: Vec<&str> = law.iter().chain(sensor.iter()).copied().collect();
+            let up = synth_run(dir.path(), &format!("lag_up_{k}_{i}.csv"), "up", "0", "10", "1", &extra);
+            let down = synth_run(dir.path(), &format!("lag_down_{k}_{i}.csv"), "down", "0", "10", "2", &extra);
+            let cal = dir.path().join(format!("lag_{k}_{i}.json"));
+            let out = calibrate(&[&up, &down], &cal);
+            assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+            let stdout = text(&out.stdout);
+            assert!(stdout.contains("angle sensor lag") && stdout.contains("s learned"), "{stdout}");
+            let j: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&cal).unwrap()).unwrap();
+            assert_eq!(j["version"], 3);
+            let lag = key(&j, "angle_sensor_lag_s");
+            assert!(stdout.contains(&format!("angle_sensor_lag_s={lag:.3}")), "{stdout}");
+            table += &format!("{:<9} {truth:>11.3} {lag:>8.3}\n", if k == 0 { "constant" } else { "seal" });
+            worst = worst.max((lag - truth).abs());
+            assert!((lag - truth).abs() <= *tol, "{sensor:?} {law:?}: learned {lag:.3} s, synthesized {truth:.3} s\n{stdout}");
+        }
+    }
+    println!("{table}largest error {worst:.3} s");
+}
+
+#[test]
+fn keeps_the_default_lag_when_the_runs_do_not_show_it() {
+    // 30 s runs (1.3 °/s): a lag error leaves too little residual to tell.
+    let dir = tempfile::tempdir().unwrap();
+    let slow = ["--pendulum", "first-order", "--pendulum-tau-s", "0.3"];
+    let up = synth_run(dir.path(), "slow_up.csv", "up", "0", "30", "1", &slow);
+    let down = synth_run(dir.path(), "slow_down.csv", "down", "0", "30", "2", &slow);
+    let cal = dir.path().join("cal.json");
+    let out = calibrate(&[&up, &down], &cal);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let stdout = text(&out.stdout);
+    println!("{stdout}");
+    assert!(stdout.contains("angle sensor lag NOT observable") && stdout.contains("default 0.111 s kept"), "{stdout}");
+    let j: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&cal).unwrap()).unwrap();
+    assert!((key(&j, "angle_sensor_lag_s") - PENDULUM_2HZ_07_LAG_S).abs() < 1e-12, "{j}");
+}
+
 #[test]
 fn a_version_1_calibration_file_still_replays_as_constant_friction() {
     let dir = tempfile::tempdir().unwrap();
@@ -252,9 +315,35 @@ fn a_version_1_calibration_file_still_replays_as_constant_friction() {
     let (r1, r2) = (replay(&v1), replay(&v1_b0));
     assert_eq!(r1.status.code(), Some(0), "{}", text(&r1.stderr));
     assert_eq!(text(&r1.stdout), text(&r2.stdout), "a v1 file is the v2 file with b = 0");
-    // A v1 file with a v2 key gets a clear message.
+    // A version-2 file is the version-3 file with the limiter's default lag.
+    let v3 = dir.path().join("v3.json");
+    let v3_with = |lag: f64| {
+        std::fs::write(
+            &v3,
+            format!(
+                "{{\"version\": 3, {}, \"friction_up_per_force\": 0, \"friction_down_per_force\": 0, \"angle_sensor_lag_s\": {lag:?}}}",
+                members.join(", ")
+            ),
+        )
+        .unwrap();
+        replay(&v3)
+    };
+    let r3 = v3_with(PENDULUM_2HZ_07_LAG_S);
+    assert_eq!(r3.status.code(), Some(0), "{}", text(&r3.stderr));
+    assert_eq!(text(&r2.stdout), text(&r3.stdout), "a v2 file is the v3 file with the default lag");
+    // And the lag is applied: another lag replays differently.
+    assert_ne!(text(&r3.stdout), text(&v3_with(0.3).stdout), "the file's lag is not applied");
+    // A v1 file with a v2 key gets a clear message, as a v2 file with the lag.
     std::fs::write(&v1, format!("{{\"version\": 1, {}, \"friction_up_per_force\": 0}}", members.join(", "))).unwrap();
     let r = replay(&v1);
     assert_eq!(r.status.code(), Some(1));
     assert!(text(&r.stderr).contains("not in calibration schema version 1"), "{}", text(&r.stderr));
+    std::fs::write(
+        &v1,
+        format!("{{\"version\": 2, {}, \"friction_up_per_force\": 0, \"friction_down_per_force\": 0, \"angle_sensor_lag_s\": 0.2}}", members.join(", ")),
+    )
+    .unwrap();
+    let r = replay(&v1);
+    assert_eq!(r.status.code(), Some(1));
+    assert!(text(&r.stderr).contains("`angle_sensor_lag_s` is not in calibration schema version 2"), "{}", text(&r.stderr));
 }
