@@ -20,7 +20,7 @@ mod common;
 use common::{model, rated_kg};
 use host_sim::synth_core;
 
-use std::sync::OnceLock;
+use std::sync::Mutex;
 
 use crane_model::loads::load_model::HookLoadModel;
 use crane_model::data::profile::RampShape;
@@ -28,7 +28,8 @@ use crane_model::multibody::rope::RopeChoice;
 use crane_model::sim::simulation::{Direction, Maneuver, Program, Segment};
 use crane_model::loads::thesis_modes::thesis_load_model_f32;
 use crane_model::Real;
-use moment_limiter::calibration::CalibrationLearner;
+use moment_limiter::calibration::{CalibrationLearner, SteadyMotion};
+use moment_limiter::sensor_lag::fit_lag;
 use moment_limiter::clock::Ticks;
 use moment_limiter::cycle::{Limiter, LimiterConfig};
 use moment_limiter::io::Frame;
@@ -67,6 +68,9 @@ thread_local! {
     /// The angle sensor as a first-order lag of this time constant (s)
     /// instead of synth's standard pendulum, for the lag measurement.
     static SENSOR_LAG_S: std::cell::Cell<Option<f64>> = const { std::cell::Cell::new(None) };
+    /// `false`: the calibration keeps the limiter's default lag (the
+    /// calibration before the lag was learned), for comparison.
+    static LEARN_LAG: std::cell::Cell<bool> = const { std::cell::Cell::new(true) };
 }
 
 /// The rope of a scenario.
@@ -163,25 +167,50 @@ fn frame<T: Real>(r: &SynthRow) -> Frame<T> {
 }
 
 /// The calibration `crane-sim calibrate` learns from the crane's unloaded 10 s
-/// cycloidal up and down runs.
+/// cycloidal up and down runs: the angle sensor's lag first (unless
+/// [`LEARN_LAG`] is off: the limiter's default), then the friction law
+/// with it.
 fn calibration_with<T: Real, M: HookLoadModel<T> + Clone>(model_l: &M, seals: Seals) -> Calibration<T> {
-    let mut learner = CalibrationLearner::new();
+    let mut logs = Vec::new();
     for (dir, seed) in [(Direction::Up, 11), (Direction::Down, 12)] {
         let mut m = Maneuver::thesis(0.0, 10.0, RampShape::Cycloidal, dir).unwrap();
         m.settle_s = 1.0;
         let (options, dt) = options_for_rate(RATE_HZ);
         let samples = simulate(model(), &m, &options).expect("simulation");
-        let rows = synthesize(&samples, dt, 1.0, 0.0, &sensors(seals, seed));
-        let mut lim = Limiter::new(model_l.clone(), LimiterConfig::standard()).unwrap();
-        for r in &rows {
-            let rep = lim.step_frame(&frame::<T>(r));
-            if let (None, Some(me)) = (rep.fault, rep.measurement) {
-                learner.observe(model_l, &me).unwrap();
-            }
-        }
-        learner.end_of_log();
+        logs.push(synthesize(&samples, dt, 1.0, 0.0, &sensors(seals, seed)));
     }
-    learner.finish(50).unwrap()
+    let learn = |lag_s: T, steady: SteadyMotion<T>| {
+        let mut learner = CalibrationLearner::with_steady_motion(steady);
+        for rows in &logs {
+            let config = LimiterConfig { angle_sensor_lag_s: lag_s, ..LimiterConfig::standard() };
+            let mut lim = Limiter::new(model_l.clone(), config).unwrap();
+            for r in rows {
+                let rep = lim.step_frame(&frame::<T>(r));
+                if let (None, Some(me)) = (rep.fault, rep.measurement) {
+                    learner.observe(model_l, &me).unwrap();
+                }
+            }
+            learner.end_of_log();
+        }
+        learner
+    };
+    let default = LimiterConfig::<T>::standard().angle_sensor_lag_s;
+    let lag = if LEARN_LAG.with(|l| l.get()) {
+        fit_lag(default, |lag_s| Ok::<_, ()>(learn(lag_s, SteadyMotion::lag_search()).line_ssr())).unwrap().lag_s
+    } else {
+        default
+    };
+    let cal = learn(lag, SteadyMotion::standard()).finish(50).unwrap();
+    println!(
+        "calibration ({seals:?} seals, sensor {:?}): lag {lag:.3} s, up {:.0} N + {:.4}·F, down {:.0} N + {:.4}·F, offset {:.0} N",
+        SENSOR_LAG_S.with(|l| l.get()),
+        cal.friction_up_n,
+        cal.friction_up_per_force,
+        cal.friction_down_n,
+        cal.friction_down_per_force,
+        cal.force_offset_n
+    );
+    Calibration { angle_sensor_lag_s: Some(lag), ..cal }
 }
 
 /// Which limiter: the host's f64 or the controller's f32.
@@ -217,20 +246,33 @@ fn replay_with<T: Real, M: HookLoadModel<T> + Clone>(model_l: &M, cal: Calibrati
         .collect()
 }
 
+/// The crane a calibration is of: its sensor's lag, whether the lag is
+/// learned, its friction law.
+type CraneKey = (Option<u64>, bool, bool);
+
 fn replay(sc: &Scenario, precision: Precision) -> Vec<Point> {
-    static C64: OnceLock<[Calibration<f64>; 2]> = OnceLock::new();
-    static C32: OnceLock<[Calibration<f32>; 2]> = OnceLock::new();
-    let i = usize::from(sc.seals == Seals::Seal);
+    // Each crane calibrated once (by its sensor's lag and friction law).
+    static C64: Mutex<Vec<(CraneKey, Calibration<f64>)>> = Mutex::new(Vec::new());
+    static C32: Mutex<Vec<(CraneKey, Calibration<f32>)>> = Mutex::new(Vec::new());
+    fn cached<T: Copy>(cache: &Mutex<Vec<(CraneKey, T)>>, key: CraneKey, make: impl FnOnce() -> T) -> T {
+        if let Some((_, c)) = cache.lock().unwrap().iter().find(|(k, _)| *k == key) {
+            return *c;
+        }
+        let c = make();
+        cache.lock().unwrap().push((key, c));
+        c
+    }
+    let key = (SENSOR_LAG_S.with(|l| l.get()).map(f64::to_bits), LEARN_LAG.with(|l| l.get()), sc.seals == Seals::Seal);
     let rows = sc.rows();
     match precision {
         Precision::F64 => {
-            let c = C64.get_or_init(|| [Seals::Constant, Seals::Seal].map(|s| calibration_with(model(), s)));
-            replay_with(model(), c[i], &rows)
+            let c = cached(&C64, key, || calibration_with(model(), sc.seals));
+            replay_with(model(), c, &rows)
         }
         Precision::F32 => {
             let m = thesis_load_model_f32();
-            let c = C32.get_or_init(|| [Seals::Constant, Seals::Seal].map(|s| calibration_with(&thesis_load_model_f32(), s)));
-            replay_with(&m, c[i], &rows)
+            let c = cached(&C32, key, || calibration_with(&m, sc.seals));
+            replay_with(&m, c, &rows)
         }
     }
 }
@@ -408,6 +450,12 @@ fn lift_off_f32() {
 /// stopping (to the end of the log), loads 30 % and 80 % of the rated load at
 /// 40°, every thesis move, rope and friction law: within [1.00, 1.10].
 fn band(precision: Precision) {
+    let (m, r) = band_percentiles(precision);
+    assert!(m[0] >= 1.0 && m[2] <= 1.1 && r[0] >= 1.0 && r[2] <= 1.1, "motion {m:?} rest {r:?}");
+}
+
+/// The band's (p5, p50, p95) in motion and at rest (see [`band`]).
+fn band_percentiles(precision: Precision) -> ([f64; 3], [f64; 3]) {
     let (mut motion, mut rest) = (Vec::new(), Vec::new());
     for (a, b, dur, ramp, shape) in thesis_moves() {
         for frac in [0.3, 0.8] {
@@ -437,7 +485,7 @@ fn band(precision: Precision) {
     let m = [percentile(&mut motion, 0.05), percentile(&mut motion, 0.5), percentile(&mut motion, 0.95)];
     let r = [percentile(&mut rest, 0.05), percentile(&mut rest, 0.5), percentile(&mut rest, 0.95)];
     println!("{precision:?}: band in motion {:.3}/{:.3}/{:.3}, at rest {:.3}/{:.3}/{:.3} (p5/p50/p95)", m[0], m[1], m[2], r[0], r[1], r[2]);
-    assert!(m[0] >= 1.0 && m[2] <= 1.1 && r[0] >= 1.0 && r[2] <= 1.1, "motion {m:?} rest {r:?}");
+    (m, r)
 }
 
 #[test]
@@ -450,18 +498,43 @@ fn band_in_motion_and_at_rest_f32() {
     band(Precision::F32);
 }
 
-/// The band's dependence on the angle sensor's true lag (the limiter assumes
-/// 0.11 s; the campaign's cranes have 0.05–0.3 s), printed, not asserted:
-/// `cargo test --release -p host-sim --test field_limiter band_against_sensor_lag -- --ignored --nocapture`.
+/// The band in motion against the angle sensor's true lag (the campaign's
+/// cranes have 0.05–0.3 s; the limiter's default is the pendulum's
+/// 0.111 s), each crane calibrated from its own unloaded runs, the lag
+/// learned: within [1.00, 1.10] for first-order sensors of 0.05 and 0.3 s
+/// (the pendulum's is `band_in_motion_and_at_rest_f64`). With the default
+/// lag kept, a 0.3 s sensor read 0.999 at p5 in motion and 0.971 at rest
+/// (`band_against_sensor_lag_measured`). At rest the band is printed, not
+/// asserted here: it reads 0.998 at p5 with a 0.2 s sensor, from light
+/// loads at 80° one second after raising, where the lag plays no part (the
+/// rest estimate's, `static_load.rs`).
+#[test]
+fn band_in_motion_against_sensor_lag() {
+    for tau in [0.05, 0.3] {
+        SENSOR_LAG_S.with(|l| l.set(Some(tau)));
+        println!("first-order lag {tau} s, lag learned:");
+        let (m, r) = band_percentiles(Precision::F64);
+        println!("  at rest p5/p95 {:.3}/{:.3} (not asserted)", r[0], r[2]);
+        assert!(m[0] >= 1.0 && m[2] <= 1.1, "lag {tau} s: motion {m:?}");
+    }
+}
+
+/// The band against the sensor's lag, learned and as before (the default
+/// kept), printed, not asserted: `cargo test --release -p host-sim --test
+/// field_limiter band_against_sensor_lag_measured -- --ignored --nocapture --test-threads=1`.
 #[test]
 #[ignore = "measurement"]
-fn band_against_sensor_lag() {
-    for tau in [0.05, 0.11, 0.2, 0.3] {
-        SENSOR_LAG_S.with(|l| l.set(Some(tau)));
-        println!("first-order lag {tau} s:");
-        let r = std::panic::catch_unwind(|| band(Precision::F64));
-        if r.is_err() {
-            println!("  (outside the band)");
+fn band_against_sensor_lag_measured() {
+    for learn in [true, false] {
+        LEARN_LAG.with(|l| l.set(learn));
+        for tau in [0.05, 0.11, 0.2, 0.3] {
+            SENSOR_LAG_S.with(|l| l.set(Some(tau)));
+            let (m, r) = band_percentiles(Precision::F64);
+            println!(
+                "sensor {tau} s, lag {}: motion {:.3}/{:.3}/{:.3} rest {:.3}/{:.3}/{:.3}",
+                if learn { "learned" } else { "default 0.111 s" },
+                m[0], m[1], m[2], r[0], r[1], r[2]
+            );
         }
     }
 }
