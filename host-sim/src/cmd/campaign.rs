@@ -20,7 +20,9 @@
 //! - **missed**: u reaches 1.05 and no OVERLOAD (nor FAULT, which cuts too) by then;
 //! - **late**: the first OVERLOAD more than 0.2 s after u reached 1.0 (not missed);
 //! - **early**: an OVERLOAD onset while 0.85 < u < 1/1.1;
-//! - **false**: an OVERLOAD onset while u ≤ 0.85;
+//! - **false**: an OVERLOAD onset while u ≤ 0.85 (a return from FAULT to the
+//!   OVERLOAD the fault interrupted is no onset: the limiter's overload latch
+//!   holds through a fault);
 //! - WARNING onsets, and those while u < 0.8;
 //! - the estimate/true band (loads ≥ 30 % of the rated load at the instant,
 //!   issue 11's bound; the limiter not in FAULT) in
@@ -502,6 +504,8 @@ fn grade(sc: &Scenario, rows: &[SynthRow], out: &[limiter_adapter::Output], rate
     let rest_after = t_luff + sc.duration_s + 1.5;
     let rest_before = (sc.lift_off_s.map_or(1.0, |l| l + 1.0), t_luff);
     let mut prev = State::Normal;
+    // The state before the current run of FAULT cycles.
+    let mut before_fault = State::Normal;
     let mut prev_load = rows.first().map_or(0.0, |r| r.true_load_kg);
     // The load leaves the ground when the hoist has taken all its weight.
     let leaves_ground_s = sc.lift_off_s;
@@ -532,6 +536,10 @@ fn grade(sc: &Scenario, rows: &[SynthRow], out: &[limiter_adapter::Output], rate
         }
         if o.state != prev {
             match o.state {
+                // Back from a FAULT to the OVERLOAD it interrupted: the
+                // limiter's overload latch holds through a fault (SPEC §4.5),
+                // so this is the same overload, graded at its onset.
+                State::Overload if prev == State::Fault && before_fault == State::Overload => {}
                 State::Overload => {
                     g.overload_onsets += 1;
                     g.min_u_at_overload_onset = Some(g.min_u_at_overload_onset.map_or(u, |m: f64| m.min(u)));
@@ -556,6 +564,9 @@ fn grade(sc: &Scenario, rows: &[SynthRow], out: &[limiter_adapter::Output], rate
             if matches!(o.state, State::Overload | State::Fault) && first_cut_s.is_none() {
                 first_cut_s = Some(r.t_s);
                 g.u_at_first_cut = Some(u);
+            }
+            if o.state == State::Fault && prev != State::Fault {
+                before_fault = prev;
             }
             prev = o.state;
         }
