@@ -142,9 +142,10 @@ pub fn fit_lag<T: Real, E>(
         best = h * T::lit(i as f64);
     }
     let s0 = s_best.min(s_min);
-    // The curve LAG_PROBE_S either side, from the parabola (k = curv/h²).
+    // The curve LAG_PROBE_S either side, from the parabola: its second
+    // difference over the grid is 2·k·h².
     let probe = T::lit(LAG_PROBE_S);
-    let k = if curv > zero { curv / (h * h) } else { zero };
+    let k = if curv > zero { curv / (T::lit(2.0) * h * h) } else { zero };
     let rise_ssr = |d: T| s0 + k * d * d;
     let rms0 = rms(s0);
     let rms_rise = if rms0 > zero {
