@@ -177,10 +177,10 @@ fn refused_calibration_files_and_blobs_exit_1_naming_the_reason() {
     };
     let mut flipped = good.clone();
     flipped[20] ^= 0x04;
-    let mut schema3 = good.clone();
-    schema3[6] = 3;
-    let mut format3 = good.clone();
-    format3[4..6].copy_from_slice(&(BLOB_FORMAT + 1).to_le_bytes());
+    let mut schema4 = good.clone();
+    schema4[6] = 4;
+    let mut format4 = good.clone();
+    format4[4..6].copy_from_slice(&(BLOB_FORMAT + 1).to_le_bytes());
     let mut p1_50 = good.clone();
     p1_50[8 + 3 * 8..8 + 4 * 8].copy_from_slice(&50.0f64.to_le_bytes());
     let mut nan = good.clone();
@@ -192,9 +192,9 @@ fn refused_calibration_files_and_blobs_exit_1_naming_the_reason() {
         (
             "truncated",
             good[..BLOB_LEN - 1].to_vec(),
-            "wrong length (75 bytes",
+            "wrong length (83 bytes",
         ),
-        ("one byte long", long, "wrong length (77 bytes"),
+        ("one byte long", long, "wrong length (85 bytes"),
         ("empty", Vec::new(), "wrong length (0 bytes"),
         (
             "erased flash",
@@ -207,14 +207,14 @@ fn refused_calibration_files_and_blobs_exit_1_naming_the_reason() {
             "wrong length",
         ),
         (
-            "schema version 3",
-            with_crc(schema3),
-            "unknown calibration schema version 3",
+            "schema version 4",
+            with_crc(schema4),
+            "unknown calibration schema version 4",
         ),
         (
-            "format 3",
-            with_crc(format3),
-            "unknown calibration blob format 3",
+            "format 4",
+            with_crc(format4),
+            "unknown calibration blob format 4",
         ),
         (
             "p1_offset_bar = 50",
