@@ -57,6 +57,7 @@ pub mod filter;
 pub mod held_pendulum;
 pub mod io;
 pub mod load_estimate;
+pub mod load_jump;
 pub mod negative_load;
 pub mod piston_force;
 pub mod state_machine;

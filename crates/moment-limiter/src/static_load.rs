@@ -139,6 +139,7 @@ use crane_model::loads::load_model::Quadratic;
 use crane_model::Real;
 
 use crate::held_pendulum::{BoomTip, HeldRopes};
+use crate::load_jump::{self, stage_gain, Consistency};
 use crate::swing::{SwingGeometry, SwingObserver, MAX_TAN_SWING};
 
 /// Hanging lengths of the held-rope hypotheses (m).
@@ -212,6 +213,8 @@ struct Hypothesis<T> {
     /// The stages of the slow average W̄_k (kg); `None` while the
     /// hypothesis cannot weigh.
     slow_kg: Option<[T; SLOW_STAGES]>,
+    /// Its consistency with a constant load ([`crate::load_jump`]).
+    jump: Consistency<T>,
 }
 
 /// The bank of rope hypotheses (see the module doc).
@@ -241,6 +244,8 @@ pub struct StaticLoadBank<T> {
     hold_kg: Option<T>,
     /// W_slow of the last cycle (kg), where averages that start begin.
     slow_kg: Option<T>,
+    /// Time left to follow a load added at rest (s; see [`crate::load_jump`]).
+    follow_s: T,
 }
 
 /// The bank's answer of one cycle.
@@ -259,7 +264,7 @@ impl<T: Real> StaticLoadBank<T> {
     pub fn new(geometry: SwingGeometry<T>) -> Self {
         let make = |k: usize| {
             let held = k.checked_sub(1);
-            Hypothesis { held, slow_kg: None }
+            Hypothesis { held, slow_kg: None, jump: Consistency::new() }
         };
         Self {
             geometry,
@@ -276,6 +281,7 @@ impl<T: Real> StaticLoadBank<T> {
             last_kg: None,
             hold_kg: None,
             slow_kg: None,
+            follow_s: T::lit(0.0),
         }
     }
 
@@ -286,9 +292,11 @@ impl<T: Real> StaticLoadBank<T> {
     pub fn restart_averages(&mut self) {
         for h in self.hypotheses.iter_mut() {
             h.slow_kg = None;
+            h.jump = Consistency::new();
         }
         self.fast_stage = None;
         self.slow_kg = None;
+        self.follow_s = T::lit(0.0);
     }
 
     /// Moves the paid-out rope observer's tip to `angle_rad` keeping its
@@ -359,18 +367,80 @@ impl<T: Real> StaticLoadBank<T> {
         }
     }
 
+    /// A load added at rest after a move ([`crate::load_jump`]): the common
+    /// ratio ρ of the consistent ropes; from ρ ≥ 1 + JUMP on, for
+    /// FOLLOW_S, every slow average and the held weighing multiplied by
+    /// ρ > 1. Then each weighing hypothesis's inconsistency takes its ratio.
+    fn follow_jump(&mut self, factors: &[Option<T>; HYPOTHESES], agree: bool, settle: T) {
+        let last = |h: &Hypothesis<T>| h.slow_kg.and_then(|st| st.last().copied());
+        // The most consistent rope's D_k sets the bar the others must meet.
+        let mut best: Option<T> = None;
+        for (h, factor) in self.hypotheses.iter().zip(factors.iter()) {
+            if factor.is_some() {
+                let d = h.jump.inconsistency();
+                best = Some(best.map_or(d, |m: T| m.min(d)));
+            }
+        }
+        let bar = best.map_or(T::lit(0.0), load_jump::bar);
+        // ρ and the voters' lowest reading S_k(W_k).
+        let (mut rho, mut reading): (Option<T>, Option<T>) = (None, None);
+        for (h, factor) in self.hypotheses.iter().zip(factors.iter()) {
+            if factor.is_none() || h.jump.inconsistency() > bar {
+                continue;
+            }
+            if let (Some(r), Some(s)) = (last(h).and_then(|avg| h.jump.ratio(avg)), h.jump.fast_kg()) {
+                rho = Some(rho.map_or(r, |m: T| m.min(r)));
+                reading = Some(reading.map_or(s, |m: T| m.min(s)));
+            }
+        }
+        let at_rest = self.still && self.moved && !agree;
+        if !at_rest {
+            self.follow_s = T::lit(0.0);
+        }
+        if let (true, Some(r), Some(s)) = (at_rest, rho, reading) {
+            if r >= T::lit(1.0 + load_jump::JUMP) {
+                self.follow_s = T::lit(load_jump::FOLLOW_S);
+            }
+            if self.follow_s > T::lit(0.0) {
+                // Raise only: ρ ≤ 1 leaves everything as it is.
+                let scale = r.max(T::lit(1.0));
+                for h in self.hypotheses.iter_mut() {
+                    if let Some(st) = h.slow_kg.as_mut() {
+                        for x in st.iter_mut() {
+                            *x *= scale;
+                        }
+                    }
+                }
+                // The voters read the new load directly: the held weighing
+                // (of the move, read ×0.96–1.0 of the old load) is raised
+                // to their reading, after its rescale (their reading has
+                // the new load in it already).
+                let held = self.hold_kg.map_or(s, |w| (w * scale).max(s));
+                self.hold_kg = Some(held);
+            }
+            self.follow_s = (self.follow_s - self.dt_s).max(T::lit(0.0));
+        }
+        for (h, factor) in self.hypotheses.iter_mut().zip(factors.iter()) {
+            if factor.is_none() {
+                continue;
+            }
+            if let Some(r) = last(h).and_then(|avg| h.jump.ratio(avg)) {
+                h.jump.settle(r, settle);
+            }
+        }
+    }
+
     /// The load of this cycle (after [`advance`](Self::advance)); `None` when
     /// the force gives no load on the model's rising branch (not observable).
     pub fn update(&mut self, terms: &LoadTerms<T>) -> Option<StaticLoad<T>> {
         let (sin_theta, cos_theta) = terms.angle_rad.sin_cos_own();
         let tan_theta = sin_theta / cos_theta;
         let tip_height = self.geometry.tip_height_m(terms.angle_rad);
-        // Gain of a slow stage, 1 − e^(−dt/τ), with e^x by its cubic Taylor
-        // polynomial (no libm exp in the cycle): in [0, 1) for every dt ≥ 0,
-        // relative error below 1e-9 at dt = 10 ms.
-        let x = self.dt_s / T::lit(SLOW_TAU_S);
-        let e = T::lit(1.0) + x * (T::lit(1.0) + x * (T::lit(0.5) + x / T::lit(6.0)));
-        let alpha = T::lit(1.0) - T::lit(1.0) / e;
+        // Gains 1 − e^(−dt/τ) of the slow stages, the fast ones (W_fast's
+        // and each hypothesis's S_k) and the inconsistency's.
+        let alpha = stage_gain(self.dt_s / T::lit(SLOW_TAU_S));
+        let gain = stage_gain(self.dt_s * T::two_pi() * T::lit(FAST_SMOOTHING_HZ));
+        let settle = stage_gain(self.dt_s / T::lit(load_jump::CONSISTENCY_TAU_S));
         // The factors first: which hypotheses weigh, and how far apart they
         // are (motion only).
         let mut factors = [None; HYPOTHESES];
@@ -406,6 +476,7 @@ impl<T: Real> StaticLoadBank<T> {
                 // it can (the rope moved on meanwhile); at rest it is kept.
                 if !still {
                     h.slow_kg = None;
+                    h.jump = Consistency::new();
                 }
                 continue;
             };
@@ -419,6 +490,10 @@ impl<T: Real> StaticLoadBank<T> {
             // that is higher (in the min it cannot raise W_slow above the
             // ropes already weighing).
             let start = prev_slow.map_or(w, |p| p.max(w));
+            if h.slow_kg.is_none() {
+                h.jump = Consistency::new();
+            }
+            h.jump.smooth(w, gain);
             let mut stages = h.slow_kg.unwrap_or([start; SLOW_STAGES]);
             let mut input = w;
             for st in stages.iter_mut() {
@@ -432,15 +507,13 @@ impl<T: Real> StaticLoadBank<T> {
             // No hypothesis can weigh: the load hanging straight and still.
             None => terms.at_rest.solve(terms.force_n)?,
         };
-        // One stage against the bounce (gain as for the slow stages).
-        let x = self.dt_s * T::two_pi() * T::lit(FAST_SMOOTHING_HZ);
-        let e = T::lit(1.0) + x * (T::lit(1.0) + x * (T::lit(0.5) + x / T::lit(6.0)));
-        let gain = T::lit(1.0) - T::lit(1.0) / e;
+        // One stage against the bounce.
         let fast = match self.fast_stage {
             Some(y) => y + gain * (fast - y),
             None => fast,
         };
         self.fast_stage = Some(fast);
+        self.follow_jump(&factors, agree, settle);
         // While every rope agrees, the weighing is W_fast itself: the
         // averages start the next move from it (a lift-off is in them at once).
         // Only the hypotheses that weigh now vote: a frozen average is a
@@ -623,16 +696,26 @@ mod rest_tests {
     }
 
     #[test]
-    #[ignore = "KNOWN GAP (as before the rest hold, same figures): a load added at rest while the load still swings from a move reads late; 3 t -> 4 t, 40°->60° / 60°->40° / 40°->80°: seen within 1 s only for 7.3 m (and 3 m, 4.7 m lowering) held ropes, after 1.4-5.9 s or not within 7 s for the others (W_fast is the lowest hypothesis, and a wrong rope's swing holds it down)"]
     fn a_load_added_at_rest_after_a_move_is_seen_within_one_second() {
+        // 3 t -> 4 t, 3 s after a 10 s-like move stops, the load still
+        // swinging: seen (>= 97.5 %) within 1 s for every held rope of the
+        // bank that the boom can hold at rest (a rope longer than the tip is
+        // high would hold its load below ground: no hypothesis of the bank
+        // is possible there, and such a crane cannot exist; printed only).
+        // Before the common-jump rescale (crate::load_jump): 1.4-6 s or not
+        // within 7 s for most lengths.
+        let g = SwingGeometry::<f64>::coles_930();
         let mut late = Vec::new();
         for (from, to) in [(40.0, 60.0), (60.0, 40.0), (40.0, 80.0)] {
             for (truth, length) in HELD_LENGTHS_M.iter().enumerate() {
                 let pts = run(from, to, truth, 3000.0, 4000.0, 13.0);
                 let seen = pts.iter().find(|p| p.0 >= 13.0 && p.1 >= 3900.0).map(|p| p.0 - 13.0);
-                println!("{from}->{to} rope {length} m: 4 t seen after {seen:?} s");
-                if seen.is_none_or(|s| s > 1.0) {
-                    late.push((from, to, truth, seen));
+                // Never above the load, before or after.
+                let over = pts.iter().map(|p| p.1 / p.2).fold(0.0, f64::max);
+                let possible = *length <= g.tip_height_m(f64::to_radians(to));
+                println!("{from}->{to} rope {length} m{}: 4 t seen after {seen:?} s, highest {over:.3}", if possible { "" } else { " (impossible at rest)" });
+                if possible && (seen.is_none_or(|s| s > 1.0) || over > 1.01) {
+                    late.push((from, to, truth, seen, over));
                 }
             }
         }
