@@ -88,13 +88,22 @@ pub fn bar<T: Real>(d_min: T) -> T {
     (T::lit(2.0) * d_min + T::lit(CONSISTENT_MARGIN)).min(T::lit(CONSISTENT))
 }
 
+/// Smallest slow average W̄_k that votes (kg): below it (an empty hook, a
+/// light one) the ratio of two small readings is the sensor's noise.
+pub const MIN_AVERAGE_KG: f64 = 500.0;
+
+/// Largest rescale in one cycle (a guard; S_k's stage at 0.7 Hz rises by
+/// less than 5 % of the step a cycle at 100 Hz).
+pub const MAX_STEP: f64 = 1.5;
+
 /// Time constant of the inconsistency's stage (s): a wrong rope's phantom
 /// swing (periods 3.5–9.5 s) shows within it.
 pub const CONSISTENCY_TAU_S: f64 = 1.0;
 
-/// How long after a rescale starts the bank keeps rescaling (s): the fast
-/// stages' step response reaches 99 % within it.
-pub const FOLLOW_S: f64 = 1.0;
+/// How long after a rescale starts the bank keeps rescaling (s): the
+/// force filter's delay (0.53 s) and the fast stages' step response (99 %
+/// in 1 s) after a take-up of up to 0.5 s.
+pub const FOLLOW_S: f64 = 2.0;
 
 /// The gain 1 − e^(−x) of a first-order stage for x = dt/τ ≥ 0, with e^x by
 /// its cubic Taylor polynomial (no libm exp in the cycle): in [0, 1) for

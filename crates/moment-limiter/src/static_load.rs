@@ -246,6 +246,9 @@ pub struct StaticLoadBank<T> {
     slow_kg: Option<T>,
     /// Time left to follow a load added at rest (s; see [`crate::load_jump`]).
     follow_s: T,
+    /// At rest after a move of at least [`MOVE_FOR_HOLD_S`]: where a load
+    /// added is looked for ([`crate::load_jump`]).
+    after_move: bool,
 }
 
 /// The bank's answer of one cycle.
@@ -282,6 +285,7 @@ impl<T: Real> StaticLoadBank<T> {
             hold_kg: None,
             slow_kg: None,
             follow_s: T::lit(0.0),
+            after_move: false,
         }
     }
 
@@ -330,6 +334,7 @@ impl<T: Real> StaticLoadBank<T> {
             // A move ends: its last weighing is held (see `update`).
             if !self.still && self.moving_s >= T::lit(MOVE_FOR_HOLD_S) {
                 self.hold_kg = self.last_kg;
+                self.after_move = true;
                 self.still_s = T::lit(0.0);
             }
             self.moving_s = T::lit(0.0);
@@ -341,6 +346,7 @@ impl<T: Real> StaticLoadBank<T> {
             self.moved = true;
             self.moving_s += self.dt_s;
             self.hold_kg = None;
+            self.after_move = false;
         }
         self.still = still;
         self.paid_out_tan_swing
@@ -388,12 +394,13 @@ impl<T: Real> StaticLoadBank<T> {
             if factor.is_none() || h.jump.inconsistency() > bar {
                 continue;
             }
-            if let (Some(r), Some(s)) = (last(h).and_then(|avg| h.jump.ratio(avg)), h.jump.fast_kg()) {
+            let weighed = last(h).filter(|&avg| avg >= T::lit(load_jump::MIN_AVERAGE_KG));
+            if let (Some(r), Some(s)) = (weighed.and_then(|avg| h.jump.ratio(avg)), h.jump.fast_kg()) {
                 rho = Some(rho.map_or(r, |m: T| m.min(r)));
                 reading = Some(reading.map_or(s, |m: T| m.min(s)));
             }
         }
-        let at_rest = self.still && self.moved && !agree;
+        let at_rest = self.still && self.after_move && !agree;
         if !at_rest {
             self.follow_s = T::lit(0.0);
         }
@@ -402,8 +409,9 @@ impl<T: Real> StaticLoadBank<T> {
                 self.follow_s = T::lit(load_jump::FOLLOW_S);
             }
             if self.follow_s > T::lit(0.0) {
-                // Raise only: ρ ≤ 1 leaves everything as it is.
-                let scale = r.max(T::lit(1.0));
+                // Raise only: ρ ≤ 1 leaves everything as it is; at most
+                // MAX_STEP a cycle (a guard: S_k's stage rises by less).
+                let scale = r.max(T::lit(1.0)).min(T::lit(load_jump::MAX_STEP));
                 for h in self.hypotheses.iter_mut() {
                     if let Some(st) = h.slow_kg.as_mut() {
                         for x in st.iter_mut() {
