@@ -30,45 +30,66 @@
 //!   [`CONSISTENCY_TAU_S`]: near 0 for the true rope (noise, bounce, the
 //!   grid's mismatch), large for a wrong rope whose phantom swings.
 //!
-//! A rope is *consistent* while D_k ≤ [`CONSISTENT`] (and it weighs now).
-//! The common ratio is the lowest of the consistent ropes,
+//! A rope *votes* while it weighs now, its average W̄_k is at least
+//! [`MIN_AVERAGE_KG`] (below, the ratio of two small readings is the
+//! sensor's noise) and D_k ≤ min(CONSISTENT, 2·D_min + CONSISTENT_MARGIN),
+//! D_min the lowest D_k of the ropes that weigh ([`bar`]): the ropes as
+//! consistent as the most consistent one, and none beyond [`CONSISTENT`].
+//! The common ratio is the lowest of the voters',
 //!
-//! ρ = min_{k : D_k ≤ CONSISTENT} ρ_k,
+//! ρ = min_{voters} ρ_k,
 //!
-//! which is no more than the true rope's ratio whenever the true rope is
-//! consistent, so no more than the load's ratio: ρ reads a change of the
-//! load, never more. D_k is a ratio of a hypothesis's readings, the same for
-//! any load, so which ropes are consistent does not depend on the load's
-//! size (a choice made from the size of the W_k would flip with the load).
+//! which is no more than the true rope's ratio whenever the true rope
+//! votes, so no more than the load's ratio: ρ reads a change of the load,
+//! never more. D_k is a ratio of a hypothesis's readings, the same for any
+//! load, so which ropes vote does not depend on the load's size (a choice
+//! made from the size of the W_k would flip with the load). A hypothesis
+//! whose average starts afresh starts with D_k = [`CONSISTENT`]: its
+//! average starts at or above W_k, so its first ratios are ≤ 1 and can
+//! only lower ρ.
 //!
 //! ## The rescale
 //!
-//! At rest after the boom has luffed (and the ropes disagree: when all agree
-//! the averages are W_fast already), when ρ ≥ 1 + [`JUMP`] the bank takes it
-//! as a heavier load and, for [`FOLLOW_S`] from then on (the fast stages'
-//! step response reaches 99 % in 1 s), every cycle with ρ > 1 it multiplies
-//! every stage of every slow average and the move's weighing held at rest by
-//! ρ: the averages become what they would have been had the new load always
+//! At rest after a move of at least
+//! [`crate::static_load::MOVE_FOR_HOLD_S`] (and while the ropes disagree:
+//! when all agree the averages are W_fast already), when ρ ≥ 1 + [`JUMP`]
+//! the bank takes it as a heavier load and, for [`FOLLOW_S`] from then on
+//! (the force filter's 0.53 s delay and the fast stages' step response),
+//! every cycle
+//!
+//! W̄_k ← ρ·W̄_k (every stage of every average),
+//! W_hold ← max(ρ·W_hold, min_{voters} S_k(W_k)),
+//!
+//! with ρ taken as 1 when below it and at most [`MAX_STEP`] (a guard):
+//! the averages become what they would have been had the new load always
 //! hung there (they are linear in the load), the true rope's ρ_k returns to
-//! 1 and it stays consistent. The reading, max(W_fast, W_slow) or the held
-//! weighing, rises with them within the fast stages' response (≥ 97.5 % of a
-//! 3 t → 4 t step in 0.84 s).
+//! 1 and it keeps voting, and the held weighing (the move's, read ×0.96–1.0
+//! of the old load) reads the new load as the voters read it. The reading,
+//! max(W_fast, W_slow) or the held weighing, rises within the force
+//! filter's and the fast stages' response: a 3 t → 4 t step on the bank's
+//! own ropes reads ≥ 97.5 % in 0.52 s; in the simulator (`host-sim` test
+//! `a_load_added_at_rest_after_a_move_*`) 1/1.1 of a load taken up over
+//! 0.5 s is read within 0.93 s of the take-up's end.
 //!
-//! It only ever multiplies by ρ > 1: it raises the reading and lowers
-//! nothing, so it delays no overload. A load set down (lighter) is followed
-//! at the averages' pace as before (that errs toward cutting). [`JUMP`] is
-//! above the load's bounce as the fast stages pass it (1–2 Hz near rated
-//! load, ±25 % of the load's pull after a 10 s move stops in a held rope:
-//! ±1.5–9 % through the force filter, ±0.5–5 % through S_k), so the bounce
-//! does not start a rescale; once started, the follow window may take in a
-//! bounce's crest (≤ 5 % high), which the averages lose at their pace. A
-//! heavier load by less than [`JUMP`], or one added while no rope is
-//! consistent (a true rope far from the bank's grid at a steep boom, whose
-//! nearest hypothesis drifts out of phase), is followed at the averages'
-//! pace as before.
+//! It only ever multiplies by ρ > 1 and raises the held weighing: it raises
+//! the reading and lowers nothing, so it delays no overload. A load set
+//! down (lighter) is followed at the averages' pace as before (that errs
+//! toward cutting). [`JUMP`] is above the load's bounce as the fast stages
+//! pass it (1–2 Hz near rated load, ±25 % of the load's pull after a 10 s
+//! move stops in a held rope: ±1.5–9 % through the force filter, ±0.5–5 %
+//! through S_k), so the bounce does not start a rescale; once started, the
+//! follow window may take in a bounce's crest (≤ 5 % high), which the
+//! averages lose at their pace and the hold keeps until it ends. A heavier
+//! load by less than [`JUMP`], one added to a hook that was (nearly) empty,
+//! or one added while no rope votes (a short rope stopped at 60–80°, a rope
+//! between the grid's lengths at 80°: the nearest hypotheses drift out of
+//! phase with the true swing) is followed at the averages' pace as before.
+//! A wider bar (D_k ≤ 0.06) let wrong ropes vote and read 90 % of rated as
+//! an OVERLOAD in the simulator; hence [`CONSISTENT`].
 //!
-//! The cost: per hypothesis one stage, one division and one stage more per
-//! cycle; no heap, fixed loops.
+//! The cost: per hypothesis two first-order stages and one division per
+//! cycle, and the rescale's multiplications during [`FOLLOW_S`]; no heap,
+//! fixed loops.
 
 use crane_model::Real;
 

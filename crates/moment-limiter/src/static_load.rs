@@ -126,14 +126,32 @@
 //! ever raises the reading). The hold never lowers the reading, so it
 //! delays no overload; a load set down while the force cannot weigh reads
 //! high until the spread falls or the hold ends (the limiter errs toward
-//! cutting). What it does not do: see a load *added* at rest during such a
-//! swing within 1 s; W_now is as slow at that as it was before the hold
-//! (test `a_load_added_at_rest_after_a_move_is_seen_within_one_second`,
-//! ignored as a known gap).
+//! cutting).
+//!
+//! ## At rest after a move: a load added, seen at once
+//!
+//! W_now follows a heavier load only at the averages' pace while the wrong
+//! ropes swing on, and the hold does not rise with it. So at rest after a
+//! move (of at least [`MOVE_FOR_HOLD_S`]) each hypothesis also keeps its
+//! fast reading S_k(W_k), its ratio to its own average ρ_k = S_k(W_k)/W̄_k
+//! and how far that ratio strays from 1, D_k ([`crate::load_jump`]). The
+//! true rope's W_k is constant while the load is, and a change of the load
+//! multiplies every W_k at once; so the consistent ropes (D_k near the
+//! lowest) vote, their lowest ratio ρ is no more than the load's, and from
+//! ρ ≥ 1.1 on, for 2 s, every average and the held weighing are multiplied
+//! by ρ > 1 and the held weighing is raised to the voters' lowest S_k(W_k):
+//!
+//! W̄_k ← ρ·W̄_k,  W_hold ← max(ρ·W_hold, min_voters S_k(W_k)).
+//!
+//! It only raises. It needs a rope of the bank that follows the true swing
+//! (D_k ≤ 0.03): on the grid or near it, or a swing small enough; a short
+//! rope stopped at 60–80° or a rope between the grid's lengths at 80° has
+//! none, and a load added there is followed at the averages' pace as before
+//! (`host-sim` test `a_load_added_at_rest_after_a_move_known_gap`).
 //!
 //! The cost per cycle: [`HYPOTHESES`] swing observers (one 10 ms sub-step at
-//! 100 Hz each), as many solutions of a quadratic and two filter stages;
-//! no heap, fixed loops.
+//! 100 Hz each), as many solutions of a quadratic, four filter stages and
+//! one division (the ratio ρ_k); no heap, fixed loops.
 
 use crane_model::loads::load_model::Quadratic;
 use crane_model::Real;
