@@ -396,62 +396,70 @@ impl<T: Real> StaticLoadBank<T> {
     /// FOLLOW_S, every slow average and the held weighing multiplied by
     /// ρ > 1. Then each weighing hypothesis's inconsistency takes its ratio.
     fn follow_jump(&mut self, factors: &[Option<T>; HYPOTHESES], agree: bool, settle: T) {
-        let last = |h: &Hypothesis<T>| h.slow_kg.and_then(|st| st.last().copied());
-        // The most consistent rope's D_k sets the bar the others must meet.
-        let mut best: Option<T> = None;
-        for (h, factor) in self.hypotheses.iter().zip(factors.iter()) {
+        // ρ_k of every hypothesis that weighs, once (one division each).
+        let mut ratios: [Option<T>; HYPOTHESES] = [None; HYPOTHESES];
+        for ((slot, h), factor) in ratios.iter_mut().zip(self.hypotheses.iter()).zip(factors.iter()) {
             if factor.is_some() {
-                let d = h.jump.inconsistency();
-                best = Some(best.map_or(d, |m: T| m.min(d)));
-            }
-        }
-        let bar = best.map_or(T::lit(0.0), load_jump::bar);
-        // ρ and the voters' lowest reading S_k(W_k).
-        let (mut rho, mut reading): (Option<T>, Option<T>) = (None, None);
-        for (h, factor) in self.hypotheses.iter().zip(factors.iter()) {
-            if factor.is_none() || h.jump.inconsistency() > bar {
-                continue;
-            }
-            let weighed = last(h).filter(|&avg| avg >= T::lit(load_jump::MIN_AVERAGE_KG));
-            if let (Some(r), Some(s)) = (weighed.and_then(|avg| h.jump.ratio(avg)), h.jump.fast_kg()) {
-                rho = Some(rho.map_or(r, |m: T| m.min(r)));
-                reading = Some(reading.map_or(s, |m: T| m.min(s)));
+                *slot = h.slow_kg.and_then(|st| st.last().copied()).and_then(|avg| h.jump.ratio(avg));
             }
         }
         let at_rest = self.still && self.after_move && !agree;
-        if !at_rest {
+        let mut scale = T::lit(1.0);
+        if at_rest {
+            // The most consistent rope's D_k sets the bar the others must meet.
+            let mut best: Option<T> = None;
+            for (h, factor) in self.hypotheses.iter().zip(factors.iter()) {
+                if factor.is_some() {
+                    let d = h.jump.inconsistency();
+                    best = Some(best.map_or(d, |m: T| m.min(d)));
+                }
+            }
+            let bar = best.map_or(T::lit(0.0), load_jump::bar);
+            // ρ and the voters' lowest reading S_k(W_k).
+            let (mut rho, mut reading): (Option<T>, Option<T>) = (None, None);
+            for (h, r) in self.hypotheses.iter().zip(ratios.iter()) {
+                let weighed = h.slow_kg.and_then(|st| st.last().copied()).is_some_and(|avg| avg >= T::lit(load_jump::MIN_AVERAGE_KG));
+                if let (true, Some(r), Some(s)) = (weighed && h.jump.inconsistency() <= bar, *r, h.jump.fast_kg()) {
+                    rho = Some(rho.map_or(r, |m: T| m.min(r)));
+                    reading = Some(reading.map_or(s, |m: T| m.min(s)));
+                }
+            }
+            if let (Some(r), Some(s)) = (rho, reading) {
+                if r >= T::lit(1.0 + load_jump::JUMP) {
+                    self.follow_s = T::lit(load_jump::FOLLOW_S);
+                }
+                if self.follow_s > T::lit(0.0) {
+                    // Raise only: ρ ≤ 1 leaves everything as it is; at most
+                    // MAX_STEP a cycle (a guard: S_k's stage rises by less).
+                    scale = r.max(T::lit(1.0)).min(T::lit(load_jump::MAX_STEP));
+                    // The voters read the new load directly: the held
+                    // weighing (of the move, read ×0.96–1.0 of the old load)
+                    // is raised to their reading, after its rescale (their
+                    // reading has the new load in it already).
+                    let held = self.hold_kg.map_or(s, |w| (w * scale).max(s));
+                    self.hold_kg = Some(held);
+                }
+                self.follow_s = (self.follow_s - self.dt_s).max(T::lit(0.0));
+            }
+        } else {
             self.follow_s = T::lit(0.0);
         }
-        if let (true, Some(r), Some(s)) = (at_rest, rho, reading) {
-            if r >= T::lit(1.0 + load_jump::JUMP) {
-                self.follow_s = T::lit(load_jump::FOLLOW_S);
-            }
-            if self.follow_s > T::lit(0.0) {
-                // Raise only: ρ ≤ 1 leaves everything as it is; at most
-                // MAX_STEP a cycle (a guard: S_k's stage rises by less).
-                let scale = r.max(T::lit(1.0)).min(T::lit(load_jump::MAX_STEP));
-                for h in self.hypotheses.iter_mut() {
-                    if let Some(st) = h.slow_kg.as_mut() {
-                        for x in st.iter_mut() {
-                            *x *= scale;
-                        }
+        // After a rescale every ρ_k is ρ_k/scale.
+        let inverse = if scale > T::lit(1.0) {
+            for h in self.hypotheses.iter_mut() {
+                if let Some(st) = h.slow_kg.as_mut() {
+                    for x in st.iter_mut() {
+                        *x *= scale;
                     }
                 }
-                // The voters read the new load directly: the held weighing
-                // (of the move, read ×0.96–1.0 of the old load) is raised
-                // to their reading, after its rescale (their reading has
-                // the new load in it already).
-                let held = self.hold_kg.map_or(s, |w| (w * scale).max(s));
-                self.hold_kg = Some(held);
             }
-            self.follow_s = (self.follow_s - self.dt_s).max(T::lit(0.0));
-        }
-        for (h, factor) in self.hypotheses.iter_mut().zip(factors.iter()) {
-            if factor.is_none() {
-                continue;
-            }
-            if let Some(r) = last(h).and_then(|avg| h.jump.ratio(avg)) {
-                h.jump.settle(r, settle);
+            T::lit(1.0) / scale
+        } else {
+            T::lit(1.0)
+        };
+        for (h, r) in self.hypotheses.iter_mut().zip(ratios.iter()) {
+            if let Some(r) = *r {
+                h.jump.settle(r * inverse, settle);
             }
         }
     }
