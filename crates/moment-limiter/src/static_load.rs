@@ -396,24 +396,21 @@ impl<T: Real> StaticLoadBank<T> {
     /// FOLLOW_S, every slow average and the held weighing multiplied by
     /// ρ > 1. Then each weighing hypothesis's inconsistency takes its ratio.
     fn follow_jump(&mut self, factors: &[Option<T>; HYPOTHESES], agree: bool, settle: T) {
-        // ρ_k of every hypothesis that weighs, once (one division each).
+        // ρ_k of every hypothesis that weighs, once (one division each),
+        // and the most consistent one's D_k, which sets the bar the others
+        // must meet to vote.
         let mut ratios: [Option<T>; HYPOTHESES] = [None; HYPOTHESES];
+        let mut best: Option<T> = None;
         for ((slot, h), factor) in ratios.iter_mut().zip(self.hypotheses.iter()).zip(factors.iter()) {
             if factor.is_some() {
                 *slot = h.slow_kg.and_then(|st| st.last().copied()).and_then(|avg| h.jump.ratio(avg));
+                let d = h.jump.inconsistency();
+                best = Some(best.map_or(d, |m: T| m.min(d)));
             }
         }
         let at_rest = self.still && self.after_move && !agree;
         let mut scale = T::lit(1.0);
         if at_rest {
-            // The most consistent rope's D_k sets the bar the others must meet.
-            let mut best: Option<T> = None;
-            for (h, factor) in self.hypotheses.iter().zip(factors.iter()) {
-                if factor.is_some() {
-                    let d = h.jump.inconsistency();
-                    best = Some(best.map_or(d, |m: T| m.min(d)));
-                }
-            }
             let bar = best.map_or(T::lit(0.0), load_jump::bar);
             // ρ and the voters' lowest reading S_k(W_k).
             let (mut rho, mut reading): (Option<T>, Option<T>) = (None, None);
@@ -444,20 +441,15 @@ impl<T: Real> StaticLoadBank<T> {
         } else {
             self.follow_s = T::lit(0.0);
         }
-        // After a rescale every ρ_k is ρ_k/scale.
-        let inverse = if scale > T::lit(1.0) {
-            for h in self.hypotheses.iter_mut() {
-                if let Some(st) = h.slow_kg.as_mut() {
-                    for x in st.iter_mut() {
-                        *x *= scale;
-                    }
+        // The rescale (scale = 1 when none: a multiplication by one costs
+        // less flash than a second loop), after which every ρ_k is ρ_k/scale.
+        let inverse = T::lit(1.0) / scale;
+        for (h, r) in self.hypotheses.iter_mut().zip(ratios.iter()) {
+            if let Some(st) = h.slow_kg.as_mut() {
+                for x in st.iter_mut() {
+                    *x *= scale;
                 }
             }
-            T::lit(1.0) / scale
-        } else {
-            T::lit(1.0)
-        };
-        for (h, r) in self.hypotheses.iter_mut().zip(ratios.iter()) {
             if let Some(r) = *r {
                 h.jump.settle(r * inverse, settle);
             }
