@@ -274,14 +274,16 @@ fn negative_load_beyond_the_bound_is_a_fault() {
     // weighing is held while a short rope's swing spreads the ropes' factors,
     // moment_limiter::static_load); an honest cycloidal lowering from 80° now reads no lower than −0.2 t,
     // its ramp's inertia no longer read as load), and a fast lowering from
-    // 85° in which the synthetic p1 itself drops out of range (a sensor FAULT)
-    // and the load reads −5.4 t for a moment after it.
+    // 85° in which the synthetic p1 itself drops out of range (a sensor FAULT;
+    // the load read −5.4 t for a moment after it while the filters restarted
+    // settled on the first sample after the gap; now that a gap under 1 s
+    // pauses the signal chain, −0.15 t).
     let cal = example("cal.json");
     let stuck: &[&str] = &["--from-deg", "88", "--to-deg", "86", "--standstill-release-s", "60", "--friction-down-n", "14000", "--hold-after-s", "20"];
     for (label, args, seed, reads_below, exit) in [
         ("unloaded 88°-86° down, seals stuck", stuck, "8", -2000.0, 0),
         ("unloaded 85°-80° down, seals stuck", &["--from-deg", "85", "--to-deg", "80", "--standstill-release-s", "60", "--friction-down-n", "18000", "--hold-after-s", "20"][..], "3", -700.0, 0),
-        ("unloaded 40°-85° down linear", &["--low-deg", "40", "--high-deg", "85", "--direction", "down", "--profile", "linear"][..], "9", -5000.0, 2),
+        ("unloaded 40°-85° down linear", &["--low-deg", "40", "--high-deg", "85", "--direction", "down", "--profile", "linear"][..], "9", -100.0, 2),
     ] {
         let label = format!("{label} seed {seed}");
         let log = dir.path().join(format!("unloaded_{seed}.csv"));

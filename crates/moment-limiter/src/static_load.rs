@@ -101,8 +101,13 @@
 //! out of W_slow too and its average restarts when it can weigh again, at
 //! rest its average is kept and votes. Which hypotheses take part depends on
 //! the boom's motion only, never on the force. When none can weigh, the load
-//! is taken hanging straight and still (factor 1), at rest after a move no
-//! lower than the move's weighing (below).
+//! is taken hanging straight and still (factor 1), but never lower than the
+//! last W_slow, the bank's weighing from before every rope became unusable
+//! (a 9 s lowering from 84° on a 5.6 m held rope left no rope weighing for
+//! 2 s; the factor-1 reading went to −0.55 of the load, the averages then
+//! restarted from it and read 0.57 of the load when the true utilization
+//! passed 1.05: a missed overload); at rest after a move no lower than the
+//! move's weighing either (below).
 //!
 //! ## At rest after a move: the move's weighing held
 //!
@@ -566,6 +571,10 @@ impl<T: Real> StaticLoadBank<T> {
         if agree {
             self.hold_kg = None;
         }
+        // No hypothesis weighs (in motion: every rope's factor is unusable,
+        // a steep boom swung hard): the last weighing stands until one can
+        // weigh again, and the averages that then start begin from it.
+        let slow = slow.or(prev_slow);
         self.slow_kg = slow;
         let now = slow.map_or(fast, |s| s.max(fast));
         // The force cannot weigh while a possible rope cannot or the ropes'

@@ -67,6 +67,13 @@ use crate::units::{BoomAngle, PressureBar};
 /// and the sensor lag (0.64 s), when its start-up transient has died out.
 pub const SETTLE_S: f64 = 2.0;
 
+/// Longest gap in the readings (s) over which the signal chain pauses
+/// rather than restarts: a pressure spike as a heavy load's move stops
+/// lasts 0.2–0.5 s. Over a longer gap the filters restart settled on the
+/// next good sample and the rope bank's averages start afresh (the load may
+/// have changed).
+pub const PAUSE_GAP_S: f64 = 1.0;
+
 /// Checked readings of one cycle.
 type Readings<T> = (PressureBar<T>, PressureBar<T>, BoomAngle<T>);
 
@@ -111,6 +118,9 @@ pub struct Limiter<T, M> {
     /// Time the bank has not been advanced (s): the faulted cycles since
     /// its last update.
     bank_idle_s: T,
+    /// Bad cycles came since the last measurement (see
+    /// [`PAUSE_GAP_S`]).
+    interrupted: bool,
     direction: DirectionDetector<T>,
     machine: StateMachine<T>,
     log: EventLog<T, EVENT_LOG_LEN>,
@@ -137,6 +147,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             moving_for_s: T::lit(0.0),
             bank: config.swing.map(StaticLoadBank::new),
             bank_idle_s: T::lit(0.0),
+            interrupted: false,
             direction: DirectionDetector::new(config.direction),
             machine: StateMachine::new(config.thresholds),
             log: EventLog::new(),

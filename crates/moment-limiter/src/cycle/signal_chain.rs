@@ -5,7 +5,7 @@
 use crane_model::loads::load_model::{BoomState, HookLoadModel};
 use crane_model::Real;
 
-use super::{Limiter, Readings};
+use super::{Limiter, Readings, PAUSE_GAP_S};
 use crate::checks::{FaultKind, SensorFault};
 use crate::io::{Channel, Measurement, SensorInputs};
 use crate::load_estimate::Direction;
@@ -56,12 +56,19 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         Ok((p1, p2, a))
     }
 
-    /// After a bad cycle the filters restart settled on the next good sample,
-    /// so no faulty value ever reaches them.
+    /// A bad cycle: no faulty value ever reaches the filters. The chain
+    /// pauses; at the next good sample it resumes, or restarts after a long
+    /// gap (see [`PAUSE_GAP_S`]).
     pub(super) fn restart_signal_chain(&mut self) {
-        self.since_restart_s = Some(T::lit(0.0));
         self.negative_load.reset();
         self.monitor.break_rate_history();
+        self.interrupted = true;
+    }
+
+    /// After a gap longer than [`PAUSE_GAP_S`] the filters restart settled
+    /// on the next good sample, and the bank's averages start afresh.
+    fn restart_filters(&mut self) {
+        self.since_restart_s = Some(T::lit(0.0));
         if let Some(l) = self.force_lag.as_mut() {
             l.reset();
         }
@@ -70,12 +77,6 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         self.previous_angle_deg = None;
         self.previous_rate_deg_s = None;
         self.moving_for_s = T::lit(0.0);
-        // The load keeps swinging through a fault (a pressure out of range
-        // when a short rope swings inward at a steep boom): the swing
-        // observers run on over the gap, only the averages start afresh.
-        if let Some(b) = self.bank.as_mut() {
-            b.restart_averages();
-        }
     }
 
     /// Stage 2: force, filters, rate and direction.
@@ -86,6 +87,20 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         angle: BoomAngle<T>,
         dt_s: T,
     ) -> Measurement<T> {
+        // The first good sample after bad ones: over a short gap (the
+        // pressure spike of a heavy load's stop, 0.2–0.5 s) the filters, the
+        // rate and the bank go on as if the gap had been one long step (they
+        // hold good samples only); restarted settled on this one sample,
+        // the filtered force sat at the spike's value (1.4 × the load after
+        // a stop at 6°) and OVERLOAD came at true u 0.906 as the fault ended.
+        let mut dt_s = dt_s;
+        if core::mem::replace(&mut self.interrupted, false) {
+            if self.bank_idle_s <= T::lit(PAUSE_GAP_S) {
+                dt_s += core::mem::replace(&mut self.bank_idle_s, T::lit(0.0));
+            } else {
+                self.restart_filters();
+            }
+        }
         let cal = &self.config.calibration;
         let force = piston_force_n(p1, p2, cal.p1_offset_bar, cal.p2_offset_bar);
         // The force through the angle sensor's lag too: force, angle, rate
