@@ -67,7 +67,7 @@
 //! of the old load) reads the new load as the voters read it. The reading,
 //! max(W_fast, W_slow) or the held weighing, rises within the force
 //! filter's and the fast stages' response: a 3 t → 4 t step on the bank's
-//! own ropes reads ≥ 97.5 % in 0.52 s; in the simulator (`host-sim` test
+//! own ropes reads ≥ 97.5 % in 0.52–0.71 s; in the simulator (`host-sim` test
 //! `a_load_added_at_rest_after_a_move_*`) 1/1.1 of a load taken up over
 //! 0.5 s is read within 0.93 s of the take-up's end.
 //!
