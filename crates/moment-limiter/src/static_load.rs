@@ -417,17 +417,20 @@ impl<T: Real> StaticLoadBank<T> {
         let mut scale = T::lit(1.0);
         if at_rest {
             let bar = best.map_or(T::lit(0.0), load_jump::bar);
-            // ρ and the voters' lowest reading S_k(W_k).
-            let (mut rho, mut reading): (Option<T>, Option<T>) = (None, None);
+            // ρ, the voters' lowest reading S_k(W_k) and their lowest rise
+            // S_k(W_k) − W̄_k (kg).
+            let (mut rho, mut reading, mut rise): (Option<T>, Option<T>, Option<T>) = (None, None, None);
             for (h, r) in self.hypotheses.iter().zip(ratios.iter()) {
-                let weighed = h.slow_kg.and_then(|st| st.last().copied()).is_some_and(|avg| avg >= T::lit(load_jump::MIN_AVERAGE_KG));
-                if let (true, Some(r), Some(s)) = (weighed && h.jump.inconsistency() <= bar, *r, h.jump.fast_kg()) {
+                let average = h.slow_kg.and_then(|st| st.last().copied()).filter(|&avg| avg >= T::lit(load_jump::MIN_AVERAGE_KG));
+                if let (true, Some(avg), Some(r), Some(s)) = (h.jump.inconsistency() <= bar, average, *r, h.jump.fast_kg()) {
                     rho = Some(rho.map_or(r, |m: T| m.min(r)));
                     reading = Some(reading.map_or(s, |m: T| m.min(s)));
+                    let d = s - avg;
+                    rise = Some(rise.map_or(d, |m: T| m.min(d)));
                 }
             }
-            if let (Some(r), Some(s)) = (rho, reading) {
-                if r >= T::lit(1.0 + load_jump::JUMP) {
+            if let (Some(r), Some(s), Some(d)) = (rho, reading, rise) {
+                if r >= T::lit(1.0 + load_jump::JUMP) && d >= T::lit(load_jump::MIN_JUMP_KG) {
                     self.follow_s = T::lit(load_jump::FOLLOW_S);
                 }
                 if self.follow_s > T::lit(0.0) {
