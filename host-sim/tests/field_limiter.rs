@@ -251,7 +251,12 @@ fn replay_with<T: Real, M: HookLoadModel<T> + Clone>(model_l: &M, cal: Calibrati
 type CraneKey = (Option<u64>, bool, bool);
 
 fn replay(sc: &Scenario, precision: Precision) -> Vec<Point> {
-    // Each crane calibrated once (by its sensor's lag and friction law).
+    replay_rows(&sc.rows(), sc.seals, precision)
+}
+
+/// Replays `rows` of a crane with `seals`, calibrated as `crane-sim calibrate`
+/// does (each crane once, by its sensor's lag and friction law).
+fn replay_rows(rows: &[SynthRow], seals: Seals, precision: Precision) -> Vec<Point> {
     static C64: Mutex<Vec<(CraneKey, Calibration<f64>)>> = Mutex::new(Vec::new());
     static C32: Mutex<Vec<(CraneKey, Calibration<f32>)>> = Mutex::new(Vec::new());
     fn cached<T: Copy>(cache: &Mutex<Vec<(CraneKey, T)>>, key: CraneKey, make: impl FnOnce() -> T) -> T {
@@ -262,17 +267,16 @@ fn replay(sc: &Scenario, precision: Precision) -> Vec<Point> {
         cache.lock().unwrap().push((key, c));
         c
     }
-    let key = (SENSOR_LAG_S.with(|l| l.get()).map(f64::to_bits), LEARN_LAG.with(|l| l.get()), sc.seals == Seals::Seal);
-    let rows = sc.rows();
+    let key = (SENSOR_LAG_S.with(|l| l.get()).map(f64::to_bits), LEARN_LAG.with(|l| l.get()), seals == Seals::Seal);
     match precision {
         Precision::F64 => {
-            let c = cached(&C64, key, || calibration_with(model(), sc.seals));
-            replay_with(model(), c, &rows)
+            let c = cached(&C64, key, || calibration_with(model(), seals));
+            replay_with(model(), c, rows)
         }
         Precision::F32 => {
             let m = thesis_load_model_f32();
-            let c = cached(&C32, key, || calibration_with(&m, sc.seals));
-            replay_with(&m, c, &rows)
+            let c = cached(&C32, key, || calibration_with(&m, seals));
+            replay_with(&m, c, rows)
         }
     }
 }
@@ -443,6 +447,115 @@ fn lift_off_f64() {
 #[test]
 fn lift_off_f32() {
     lift_off(Precision::F32);
+}
+
+/// A load added at rest while the load still swings from a move (the
+/// campaign's lift-offs start with the load hanging still): a 10 s cycloidal
+/// move (40° → 60°, 60° → 40°, 40° → 80°) with 60 % of the lower of the two
+/// angles' rated loads on a held rope (3 m, a quarter, half and all the way
+/// to the tip height at the lowest angle), 3 s at rest, then the hoist takes
+/// up more load over 0.5 s, to 90 % or 110 % of the rated load at rest:
+/// at 110 % OVERLOAD within 1 s of the end of the take-up; at 90 % no
+/// OVERLOAD, and the estimate (×1.05, SAE J376) within 1 s at 1/1.1 of the
+/// true load (where a 110 % load reads as an OVERLOAD); the time to reach
+/// the true load is printed. Before the common-jump rescale (`moment_limiter::load_jump`) the
+/// estimate followed at the slow averages' pace (seen after up to 6 s, or
+/// not within 7 s, in the bank's unit test).
+fn load_added_at_rest_after_a_move(precision: Precision, cases: &[(f64, f64, Rope)]) {
+    const TAKE_UP_S: f64 = 0.5;
+    const AT_REST_S: f64 = 3.0;
+    let mut failures = Vec::new();
+    let mut worst_seen: f64 = 0.0;
+    for &(from, to, rope) in cases {
+        let w0 = 0.6 * rated_kg(from.min(to).to_radians());
+        {
+            for seals in [Seals::Constant, Seals::Seal] {
+                for (frac, must) in [(0.9, false), (1.1, true)] {
+                    let w1 = frac * rated_kg(to.to_radians());
+                    let name = format!("{from:.0}->{to:.0} 10s {rope:?} {seals:?}: {w0:.0} kg, +{:.0} kg at rest", w1 - w0);
+                    let mut p = Program::new(from, w0, rope_choice(rope, from.min(to))).unwrap();
+                    p.push(Segment::Hold { duration_s: HOLD_BEFORE_S }).unwrap();
+                    p.push(Segment::Luff { to_deg: to, shape: RampShape::Cycloidal, t1_s: 1.0, t2_s: 9.0, t3_s: 10.0 }).unwrap();
+                    p.push(Segment::Hold { duration_s: AT_REST_S }).unwrap();
+                    p.push(Segment::LiftOff { duration_s: TAKE_UP_S, load_kg: w1 }).unwrap();
+                    p.push(Segment::Hold { duration_s: 4.0 }).unwrap();
+                    let (options, dt) = options_for_rate(RATE_HZ);
+                    let samples = simulate_program(model(), &p, &options).expect("simulation");
+                    let rows = synthesize(&samples, dt, 0.0, w0, &sensors(seals, 13));
+                    let pts = replay_rows(&rows, seals, precision);
+                    let lifted = HOLD_BEFORE_S + 10.0 + AT_REST_S + TAKE_UP_S;
+                    // Seen: the estimate at 1/1.1 of the true load, where a
+                    // 110 % load is an OVERLOAD (the lift-off test's bound).
+                    let seen = pts.iter().find(|q| q.t >= lifted && q.ratio >= 1.0 / 1.1).map(|q| q.t - lifted);
+                    let full = pts.iter().find(|q| q.t >= lifted && q.ratio >= 1.0).map(|q| q.t - lifted);
+                    let first = first_overload(&pts);
+                    println!(
+                        "{name:<62} estimate >= true/1.1 {} s after, >= true {} s, OVERLOAD {}",
+                        seen.map_or("never".into(), |s| format!("{s:+.2}")),
+                        full.map_or("never".into(), |s| format!("{s:+.2}")),
+                        first.map_or("none".into(), |f| format!("at {:+.2} s, true u {:.3}", f.0 - lifted, f.1))
+                    );
+                    worst_seen = worst_seen.max(seen.unwrap_or(f64::INFINITY));
+                    match (must, first, seen) {
+                        (false, Some((t, u)), _) => failures.push(format!("{name}: OVERLOAD at {t:.2} s, true u {u:.3}")),
+                        (false, None, s) if s.is_none_or(|s| s > 1.0) => failures.push(format!("{name}: estimate below 1/1.1 of the true load 1 s after ({s:?})")),
+                        (true, None, _) => failures.push(format!("{name}: no OVERLOAD")),
+                        (true, Some((t, u)), _) if t > lifted + 1.0 || u < 1.0 / 1.1 => {
+                            failures.push(format!("{name}: OVERLOAD at {:+.2} s, true u {u:.3}", t - lifted))
+                        }
+                        _ => {}
+                    }
+                }
+            }
+        }
+    }
+    println!("{precision:?}: {} failures of {}; slowest estimate to reach 1/1.1 of the true load {worst_seen:.2} s after the take-up", failures.len(), 4 * cases.len());
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
+/// The moves and ropes where the bank sees a load added at rest within 1 s
+/// (a rope of the bank's grid, or near it, follows the true swing).
+const ADDED_SEEN: [(f64, f64, Rope); 8] = [
+    (40.0, 60.0, Rope::Held(0.25)),
+    (40.0, 60.0, Rope::Held(0.5)),
+    (40.0, 60.0, Rope::Held(1.0)),
+    (60.0, 40.0, Rope::Held(0.0)),
+    (60.0, 40.0, Rope::Held(0.25)),
+    (60.0, 40.0, Rope::Held(0.5)),
+    (60.0, 40.0, Rope::Held(1.0)),
+    (40.0, 80.0, Rope::Held(0.5)),
+];
+
+/// Where it does not (yet): no rope of the bank stays consistent with the
+/// true swing (see `moment_limiter::load_jump`).
+const ADDED_GAP: [(f64, f64, Rope); 4] = [
+    (40.0, 60.0, Rope::Held(0.0)),
+    (40.0, 80.0, Rope::Held(0.0)),
+    (40.0, 80.0, Rope::Held(0.25)),
+    (40.0, 80.0, Rope::Held(1.0)),
+];
+
+#[test]
+fn a_load_added_at_rest_after_a_move_f64() {
+    load_added_at_rest_after_a_move(Precision::F64, &ADDED_SEEN);
+}
+
+#[test]
+fn a_load_added_at_rest_after_a_move_f32() {
+    load_added_at_rest_after_a_move(Precision::F32, &ADDED_SEEN);
+}
+
+/// KNOWN GAP, measured (f64): a 3 m rope stopped at 60° or 80° and the
+/// 5.5 m and 13 m ropes stopped at 80° (between the bank's lengths, whose
+/// swings drift out of phase with the true one; at 80° the load swung inward
+/// barely pulls on the cylinder): the added load is seen after 2–2.2 s or
+/// not within 4 s (an 110 % load then cuts only when the averages catch up),
+/// and 90 % added to the 3 m rope at 80° cuts 2.45 s after the take-up at a
+/// true 0.90 (as before this bank's rescale).
+#[test]
+#[ignore = "KNOWN GAP: a load added at rest where no rope of the bank follows the true swing (short ropes at 60-80 deg, ropes between the grid's lengths at 80 deg): seen after 2-2.2 s or not within 4 s"]
+fn a_load_added_at_rest_after_a_move_known_gap() {
+    load_added_at_rest_after_a_move(Precision::F64, &ADDED_GAP);
 }
 
 /// The estimate/true band (5th–95th percentile) in constant-velocity motion

@@ -131,19 +131,38 @@
 //! ever raises the reading). The hold never lowers the reading, so it
 //! delays no overload; a load set down while the force cannot weigh reads
 //! high until the spread falls or the hold ends (the limiter errs toward
-//! cutting). What it does not do: see a load *added* at rest during such a
-//! swing within 1 s; W_now is as slow at that as it was before the hold
-//! (test `a_load_added_at_rest_after_a_move_is_seen_within_one_second`,
-//! ignored as a known gap).
+//! cutting).
+//!
+//! ## At rest after a move: a load added, seen at once
+//!
+//! W_now follows a heavier load only at the averages' pace while the wrong
+//! ropes swing on, and the hold does not rise with it. So at rest after a
+//! move (of at least [`MOVE_FOR_HOLD_S`]) each hypothesis also keeps its
+//! fast reading S_k(W_k), its ratio to its own average ρ_k = S_k(W_k)/W̄_k
+//! and how far that ratio strays from 1, D_k ([`crate::load_jump`]). The
+//! true rope's W_k is constant while the load is, and a change of the load
+//! multiplies every W_k at once; so the consistent ropes (D_k near the
+//! lowest) vote, their lowest ratio ρ is no more than the load's, and from
+//! ρ ≥ 1.1 on, for 2 s, every average and the held weighing are multiplied
+//! by ρ > 1 and the held weighing is raised to the voters' lowest S_k(W_k):
+//!
+//! W̄_k ← ρ·W̄_k,  W_hold ← max(ρ·W_hold, min_voters S_k(W_k)).
+//!
+//! It only raises. It needs a rope of the bank that follows the true swing
+//! (D_k ≤ 0.03): on the grid or near it, or a swing small enough; a short
+//! rope stopped at 60–80° or a rope between the grid's lengths at 80° has
+//! none, and a load added there is followed at the averages' pace as before
+//! (`host-sim` test `a_load_added_at_rest_after_a_move_known_gap`).
 //!
 //! The cost per cycle: [`HYPOTHESES`] swing observers (one 10 ms sub-step at
-//! 100 Hz each), as many solutions of a quadratic and two filter stages;
-//! no heap, fixed loops.
+//! 100 Hz each), as many solutions of a quadratic, four filter stages and
+//! one division (the ratio ρ_k); no heap, fixed loops.
 
 use crane_model::loads::load_model::Quadratic;
 use crane_model::Real;
 
 use crate::held_pendulum::{BoomTip, HeldRopes};
+use crate::load_jump::{self, stage_gain, Consistency};
 use crate::swing::{SwingGeometry, SwingObserver, MAX_TAN_SWING};
 
 /// Hanging lengths of the held-rope hypotheses (m).
@@ -217,6 +236,8 @@ struct Hypothesis<T> {
     /// The stages of the slow average W̄_k (kg); `None` while the
     /// hypothesis cannot weigh.
     slow_kg: Option<[T; SLOW_STAGES]>,
+    /// Its consistency with a constant load ([`crate::load_jump`]).
+    jump: Consistency<T>,
 }
 
 /// The bank of rope hypotheses (see the module doc).
@@ -246,6 +267,11 @@ pub struct StaticLoadBank<T> {
     hold_kg: Option<T>,
     /// W_slow of the last cycle (kg), where averages that start begin.
     slow_kg: Option<T>,
+    /// Time left to follow a load added at rest (s; see [`crate::load_jump`]).
+    follow_s: T,
+    /// At rest after a move of at least [`MOVE_FOR_HOLD_S`]: where a load
+    /// added is looked for ([`crate::load_jump`]).
+    after_move: bool,
 }
 
 /// The bank's answer of one cycle.
@@ -264,7 +290,7 @@ impl<T: Real> StaticLoadBank<T> {
     pub fn new(geometry: SwingGeometry<T>) -> Self {
         let make = |k: usize| {
             let held = k.checked_sub(1);
-            Hypothesis { held, slow_kg: None }
+            Hypothesis { held, slow_kg: None, jump: Consistency::new() }
         };
         Self {
             geometry,
@@ -281,6 +307,8 @@ impl<T: Real> StaticLoadBank<T> {
             last_kg: None,
             hold_kg: None,
             slow_kg: None,
+            follow_s: T::lit(0.0),
+            after_move: false,
         }
     }
 
@@ -291,9 +319,11 @@ impl<T: Real> StaticLoadBank<T> {
     pub fn restart_averages(&mut self) {
         for h in self.hypotheses.iter_mut() {
             h.slow_kg = None;
+            h.jump = Consistency::new();
         }
         self.fast_stage = None;
         self.slow_kg = None;
+        self.follow_s = T::lit(0.0);
     }
 
     /// Moves the paid-out rope observer's tip to `angle_rad` keeping its
@@ -327,6 +357,7 @@ impl<T: Real> StaticLoadBank<T> {
             // A move ends: its last weighing is held (see `update`).
             if !self.still && self.moving_s >= T::lit(MOVE_FOR_HOLD_S) {
                 self.hold_kg = self.last_kg;
+                self.after_move = true;
                 self.still_s = T::lit(0.0);
             }
             self.moving_s = T::lit(0.0);
@@ -338,6 +369,7 @@ impl<T: Real> StaticLoadBank<T> {
             self.moved = true;
             self.moving_s += self.dt_s;
             self.hold_kg = None;
+            self.after_move = false;
         }
         self.still = still;
         self.paid_out_tan_swing
@@ -364,18 +396,85 @@ impl<T: Real> StaticLoadBank<T> {
         }
     }
 
+    /// A load added at rest after a move ([`crate::load_jump`]): the common
+    /// ratio ρ of the consistent ropes; from ρ ≥ 1 + JUMP on, for
+    /// FOLLOW_S, every slow average and the held weighing multiplied by
+    /// ρ > 1. Then each weighing hypothesis's inconsistency takes its ratio.
+    fn follow_jump(&mut self, factors: &[Option<T>; HYPOTHESES], agree: bool, settle: T) {
+        // ρ_k of every hypothesis that weighs, once (one division each),
+        // and the most consistent one's D_k, which sets the bar the others
+        // must meet to vote.
+        let mut ratios: [Option<T>; HYPOTHESES] = [None; HYPOTHESES];
+        let mut best: Option<T> = None;
+        for ((slot, h), factor) in ratios.iter_mut().zip(self.hypotheses.iter()).zip(factors.iter()) {
+            if factor.is_some() {
+                *slot = h.slow_kg.and_then(|st| st.last().copied()).and_then(|avg| h.jump.ratio(avg));
+                let d = h.jump.inconsistency();
+                best = Some(best.map_or(d, |m: T| m.min(d)));
+            }
+        }
+        let at_rest = self.still && self.after_move && !agree;
+        let mut scale = T::lit(1.0);
+        if at_rest {
+            let bar = best.map_or(T::lit(0.0), load_jump::bar);
+            // ρ, the voters' lowest reading S_k(W_k) and their lowest rise
+            // S_k(W_k) − W̄_k (kg).
+            let (mut rho, mut reading, mut rise): (Option<T>, Option<T>, Option<T>) = (None, None, None);
+            for (h, r) in self.hypotheses.iter().zip(ratios.iter()) {
+                let average = h.slow_kg.and_then(|st| st.last().copied()).filter(|&avg| avg >= T::lit(load_jump::MIN_AVERAGE_KG));
+                if let (true, Some(avg), Some(r), Some(s)) = (h.jump.inconsistency() <= bar, average, *r, h.jump.fast_kg()) {
+                    rho = Some(rho.map_or(r, |m: T| m.min(r)));
+                    reading = Some(reading.map_or(s, |m: T| m.min(s)));
+                    let d = s - avg;
+                    rise = Some(rise.map_or(d, |m: T| m.min(d)));
+                }
+            }
+            if let (Some(r), Some(s), Some(d)) = (rho, reading, rise) {
+                if r >= T::lit(1.0 + load_jump::JUMP) && d >= T::lit(load_jump::MIN_JUMP_KG) {
+                    self.follow_s = T::lit(load_jump::FOLLOW_S);
+                }
+                if self.follow_s > T::lit(0.0) {
+                    // Raise only: ρ ≤ 1 leaves everything as it is; at most
+                    // MAX_STEP a cycle (a guard: S_k's stage rises by less).
+                    scale = r.max(T::lit(1.0)).min(T::lit(load_jump::MAX_STEP));
+                    // The voters read the new load directly: the held
+                    // weighing (of the move, read ×0.96–1.0 of the old load)
+                    // is raised to their reading, after its rescale (their
+                    // reading has the new load in it already).
+                    let held = self.hold_kg.map_or(s, |w| (w * scale).max(s));
+                    self.hold_kg = Some(held);
+                }
+                self.follow_s = (self.follow_s - self.dt_s).max(T::lit(0.0));
+            }
+        } else {
+            self.follow_s = T::lit(0.0);
+        }
+        // The rescale (scale = 1 when none: a multiplication by one costs
+        // less flash than a second loop), after which every ρ_k is ρ_k/scale.
+        let inverse = T::lit(1.0) / scale;
+        for (h, r) in self.hypotheses.iter_mut().zip(ratios.iter()) {
+            if let Some(st) = h.slow_kg.as_mut() {
+                for x in st.iter_mut() {
+                    *x *= scale;
+                }
+            }
+            if let Some(r) = *r {
+                h.jump.settle(r * inverse, settle);
+            }
+        }
+    }
+
     /// The load of this cycle (after [`advance`](Self::advance)); `None` when
     /// the force gives no load on the model's rising branch (not observable).
     pub fn update(&mut self, terms: &LoadTerms<T>) -> Option<StaticLoad<T>> {
         let (sin_theta, cos_theta) = terms.angle_rad.sin_cos_own();
         let tan_theta = sin_theta / cos_theta;
         let tip_height = self.geometry.tip_height_m(terms.angle_rad);
-        // Gain of a slow stage, 1 − e^(−dt/τ), with e^x by its cubic Taylor
-        // polynomial (no libm exp in the cycle): in [0, 1) for every dt ≥ 0,
-        // relative error below 1e-9 at dt = 10 ms.
-        let x = self.dt_s / T::lit(SLOW_TAU_S);
-        let e = T::lit(1.0) + x * (T::lit(1.0) + x * (T::lit(0.5) + x / T::lit(6.0)));
-        let alpha = T::lit(1.0) - T::lit(1.0) / e;
+        // Gains 1 − e^(−dt/τ) of the slow stages, the fast ones (W_fast's
+        // and each hypothesis's S_k) and the inconsistency's.
+        let alpha = stage_gain(self.dt_s / T::lit(SLOW_TAU_S));
+        let gain = stage_gain(self.dt_s * T::two_pi() * T::lit(FAST_SMOOTHING_HZ));
+        let settle = stage_gain(self.dt_s / T::lit(load_jump::CONSISTENCY_TAU_S));
         // The factors first: which hypotheses weigh, and how far apart they
         // are (motion only).
         let mut factors = [None; HYPOTHESES];
@@ -411,6 +510,7 @@ impl<T: Real> StaticLoadBank<T> {
                 // it can (the rope moved on meanwhile); at rest it is kept.
                 if !still {
                     h.slow_kg = None;
+                    h.jump = Consistency::new();
                 }
                 continue;
             };
@@ -424,6 +524,10 @@ impl<T: Real> StaticLoadBank<T> {
             // that is higher (in the min it cannot raise W_slow above the
             // ropes already weighing).
             let start = prev_slow.map_or(w, |p| p.max(w));
+            if h.slow_kg.is_none() {
+                h.jump = Consistency::new();
+            }
+            h.jump.smooth(w, gain);
             let mut stages = h.slow_kg.unwrap_or([start; SLOW_STAGES]);
             let mut input = w;
             for st in stages.iter_mut() {
@@ -437,15 +541,13 @@ impl<T: Real> StaticLoadBank<T> {
             // No hypothesis can weigh: the load hanging straight and still.
             None => terms.at_rest.solve(terms.force_n)?,
         };
-        // One stage against the bounce (gain as for the slow stages).
-        let x = self.dt_s * T::two_pi() * T::lit(FAST_SMOOTHING_HZ);
-        let e = T::lit(1.0) + x * (T::lit(1.0) + x * (T::lit(0.5) + x / T::lit(6.0)));
-        let gain = T::lit(1.0) - T::lit(1.0) / e;
+        // One stage against the bounce.
         let fast = match self.fast_stage {
             Some(y) => y + gain * (fast - y),
             None => fast,
         };
         self.fast_stage = Some(fast);
+        self.follow_jump(&factors, agree, settle);
         // While every rope agrees, the weighing is W_fast itself: the
         // averages start the next move from it (a lift-off is in them at once).
         // Only the hypotheses that weigh now vote: a frozen average is a
@@ -632,16 +734,26 @@ mod rest_tests {
     }
 
     #[test]
-    #[ignore = "KNOWN GAP (as before the rest hold, same figures): a load added at rest while the load still swings from a move reads late; 3 t -> 4 t, 40°->60° / 60°->40° / 40°->80°: seen within 1 s only for 7.3 m (and 3 m, 4.7 m lowering) held ropes, after 1.4-5.9 s or not within 7 s for the others (W_fast is the lowest hypothesis, and a wrong rope's swing holds it down)"]
     fn a_load_added_at_rest_after_a_move_is_seen_within_one_second() {
+        // 3 t -> 4 t, 3 s after a 10 s-like move stops, the load still
+        // swinging: seen (>= 97.5 %) within 1 s for every held rope of the
+        // bank that the boom can hold at rest (a rope longer than the tip is
+        // high would hold its load below ground: no hypothesis of the bank
+        // is possible there, and such a crane cannot exist; printed only).
+        // Before the common-jump rescale (crate::load_jump): 1.4-6 s or not
+        // within 7 s for most lengths.
+        let g = SwingGeometry::<f64>::coles_930();
         let mut late = Vec::new();
         for (from, to) in [(40.0, 60.0), (60.0, 40.0), (40.0, 80.0)] {
             for (truth, length) in HELD_LENGTHS_M.iter().enumerate() {
                 let pts = run(from, to, truth, 3000.0, 4000.0, 13.0);
                 let seen = pts.iter().find(|p| p.0 >= 13.0 && p.1 >= 3900.0).map(|p| p.0 - 13.0);
-                println!("{from}->{to} rope {length} m: 4 t seen after {seen:?} s");
-                if seen.is_none_or(|s| s > 1.0) {
-                    late.push((from, to, truth, seen));
+                // Never above the load, before or after.
+                let over = pts.iter().map(|p| p.1 / p.2).fold(0.0, f64::max);
+                let possible = *length <= g.tip_height_m(f64::to_radians(to));
+                println!("{from}->{to} rope {length} m{}: 4 t seen after {seen:?} s, highest {over:.3}", if possible { "" } else { " (impossible at rest)" });
+                if possible && (seen.is_none_or(|s| s > 1.0) || over > 1.01) {
+                    late.push((from, to, truth, seen, over));
                 }
             }
         }
