@@ -332,7 +332,12 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
     };
     writeln!(out, "fit over {runs_text}: friction = a + b*|F| per direction")?;
     for (dir, f, mx) in [("up", learned.up, max.0), ("down", learned.down, max.1)] {
-        let b_note = if f.slope_observable {
+        let b_note = if f.slope_observable && f.raw_b < 0.0 {
+            format!(
+                "b = 0: the fitted slope {:.5} +- {:.5} is negative (a friction falling with pressure is noise on a constant law), a refitted",
+                f.raw_b, f.b_se
+            )
+        } else if f.slope_observable {
             format!(
                 "b learned (slope {:.5} +- {:.5}, force {:.1} +- {:.1} kN)",
                 f.raw_b,
