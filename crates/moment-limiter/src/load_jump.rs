@@ -134,14 +134,6 @@ pub const CONSISTENCY_TAU_S: f64 = 1.0;
 /// in 1 s) after a take-up of up to 0.5 s.
 pub const FOLLOW_S: f64 = 2.0;
 
-/// The gain 1 − e^(−x) of a first-order stage for x = dt/τ ≥ 0, with e^x by
-/// its cubic Taylor polynomial (no libm exp in the cycle): in [0, 1) for
-/// every x ≥ 0, relative error below 1e-9 at dt = 10 ms, τ ≥ 0.2 s.
-pub fn stage_gain<T: Real>(x: T) -> T {
-    let e = T::lit(1.0) + x * (T::lit(1.0) + x * (T::lit(0.5) + x / T::lit(6.0)));
-    T::lit(1.0) - T::lit(1.0) / e
-}
-
 /// One hypothesis's consistency with a constant load (see the module doc).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Consistency<T> {
@@ -206,6 +198,7 @@ impl<T: Real> Consistency<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::filter::stage_gain;
 
     #[test]
     fn a_constant_weighing_becomes_consistent_and_a_swinging_one_does_not() {

@@ -162,7 +162,8 @@ use crane_model::loads::load_model::Quadratic;
 use crane_model::Real;
 
 use crate::held_pendulum::{BoomTip, HeldRopes};
-use crate::load_jump::{self, stage_gain, Consistency};
+use crate::filter::stage_gain;
+use crate::load_jump::{self, Consistency};
 use crate::swing::{SwingGeometry, SwingObserver, MAX_TAN_SWING};
 
 /// Hanging lengths of the held-rope hypotheses (m).

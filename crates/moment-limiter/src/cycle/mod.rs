@@ -259,11 +259,11 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         };
         let fault = match (fault, readings) {
             (Some(f), _) => {
-                self.restart_signal_chain();
+                self.interrupt_signal_chain();
                 Some(f)
             }
             (None, Err(sensor)) => {
-                self.restart_signal_chain();
+                self.interrupt_signal_chain();
                 Some(Fault::Sensor(sensor))
             }
             (None, Ok((p1, p2, angle))) => {
@@ -272,7 +272,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
                     .check([p1.bar(), p2.bar(), angle.degrees()], dt_s)
                 {
                     Err(sensor) => {
-                        self.restart_signal_chain();
+                        self.interrupt_signal_chain();
                         Some(Fault::Sensor(sensor))
                     }
                     Ok(()) => {

@@ -7,6 +7,7 @@ use crane_model::Real;
 
 use super::{Limiter, Readings, PAUSE_GAP_S};
 use crate::checks::{FaultKind, SensorFault};
+use crate::filter::exp_taylor3;
 use crate::io::{Channel, Measurement, SensorInputs};
 use crate::load_estimate::Direction;
 use crate::piston_force::piston_force_n;
@@ -59,7 +60,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     /// A bad cycle: no faulty value ever reaches the filters. The chain
     /// pauses; at the next good sample it resumes, or restarts after a long
     /// gap (see [`PAUSE_GAP_S`]).
-    pub(super) fn restart_signal_chain(&mut self) {
+    pub(super) fn interrupt_signal_chain(&mut self) {
         self.negative_load.reset();
         self.monitor.break_rate_history();
         self.interrupted = true;
@@ -137,10 +138,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         };
         // The seals release at standstill (see crate::load_estimate).
         self.static_friction_share = if direction == Direction::Still {
-            let x = dt_s / self.config.seal_release_s;
-            // e^(−x) ≈ 1/(1 + x + x²/2 + x³/6): no libm exp in the cycle.
-            self.static_friction_share
-                / (T::lit(1.0) + x * (T::lit(1.0) + x * (T::lit(0.5) + x / T::lit(6.0))))
+            self.static_friction_share / exp_taylor3(dt_s / self.config.seal_release_s)
         } else {
             T::lit(1.0)
         };
