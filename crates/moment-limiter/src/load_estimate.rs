@@ -75,24 +75,41 @@ pub struct DirectionThresholds<T> {
     pub start_deg_s: T,
     /// |rate| below which a moving boom is still (< `start_deg_s`: hysteresis).
     pub stop_deg_s: T,
+    /// Time (s) a still boom's rate must stay beyond `stop_deg_s` the same
+    /// way for it to be moving: the seals slide at any speed, and a raise
+    /// at 0.13 °/s (below `start_deg_s`) kept the up-friction in the force
+    /// as load (+6 %, an OVERLOAD at true u 0.898). Counted only once the
+    /// filters have run [`CREEP_AFTER_START_S`].
+    pub creep_s: T,
 }
 
 impl<T: Real> DirectionThresholds<T> {
     /// Defaults: start at 0.15 °/s, stop below 0.05 °/s (the thesis's slowest
-    /// manoeuvre runs at about 1.3 °/s).
+    /// manoeuvre runs at about 1.3 °/s), or creeping at over 0.05 °/s for
+    /// 0.25 s (the filtered rate's noise at rest stays under 0.03 °/s, in a
+    /// lift-off too).
     pub fn standard() -> Self {
         Self {
             start_deg_s: T::lit(0.15),
             stop_deg_s: T::lit(0.05),
+            creep_s: T::lit(0.25),
         }
     }
-    /// `true` when 0 < stop ≤ start and both are finite.
+    /// `true` when 0 < stop ≤ start, 0 ≤ creep and all are finite.
     pub fn is_valid(&self) -> bool {
         self.start_deg_s.is_finite()
             && self.stop_deg_s > T::lit(0.0)
             && self.stop_deg_s <= self.start_deg_s
+            && self.creep_s >= T::lit(0.0)
+            && self.creep_s.is_finite()
     }
 }
+
+/// Time after the filters start (s) before a creep counts (see
+/// [`DirectionThresholds::creep_s`]): a filter starts settled on its first
+/// sample, and one quantisation step of the angle (0.027°) in it reads as
+/// 0.09 °/s for half a second while the filter converges.
+pub const CREEP_AFTER_START_S: f64 = 1.0;
 
 /// Direction of motion with hysteresis, remembering the last moving direction.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -100,6 +117,11 @@ pub struct DirectionDetector<T> {
     thresholds: DirectionThresholds<T>,
     current: Direction,
     last_moving: Option<Direction>,
+    /// How long a still boom's rate has been beyond the stop threshold the
+    /// same way (s; negative: downward).
+    creeping_s: T,
+    /// Time since the filters started (s), up to [`CREEP_AFTER_START_S`].
+    age_s: T,
 }
 
 impl<T: Real> DirectionDetector<T> {
@@ -109,17 +131,42 @@ impl<T: Real> DirectionDetector<T> {
             thresholds,
             current: Direction::Still,
             last_moving: None,
+            creeping_s: T::lit(0.0),
+            age_s: T::lit(0.0),
         }
     }
 
-    /// Updates with the filtered angle rate (°/s) and returns the direction.
-    pub fn update(&mut self, rate_deg_s: T) -> Direction {
+    /// The filters restarted: their start-up is no creep (see
+    /// [`CREEP_AFTER_START_S`]).
+    pub fn filters_restarted(&mut self) {
+        self.age_s = T::lit(0.0);
+        self.creeping_s = T::lit(0.0);
+    }
+
+    /// Updates with the filtered angle rate (°/s), `dt_s` after the last
+    /// update, and returns the direction.
+    pub fn update(&mut self, rate_deg_s: T, dt_s: T) -> Direction {
         let th = self.thresholds;
+        let zero = T::lit(0.0);
+        let dt = if dt_s > zero { dt_s } else { zero };
+        self.age_s = (self.age_s + dt).min(T::lit(CREEP_AFTER_START_S));
+        // A still boom creeping: how long its rate has stayed beyond the
+        // stop threshold one way (restarted when it turns or falls inside).
+        let counts = self.age_s >= T::lit(CREEP_AFTER_START_S);
+        self.creeping_s = if counts && rate_deg_s > th.stop_deg_s {
+            self.creeping_s.max(zero) + dt
+        } else if counts && rate_deg_s < -th.stop_deg_s {
+            self.creeping_s.min(zero) - dt
+        } else {
+            zero
+        };
         self.current = match self.current {
             Direction::Up if rate_deg_s > th.stop_deg_s => Direction::Up,
             Direction::Down if rate_deg_s < -th.stop_deg_s => Direction::Down,
             _ if rate_deg_s > th.start_deg_s => Direction::Up,
             _ if rate_deg_s < -th.start_deg_s => Direction::Down,
+            _ if self.creeping_s > th.creep_s => Direction::Up,
+            _ if self.creeping_s < -th.creep_s => Direction::Down,
             _ => Direction::Still,
         };
         if self.current != Direction::Still {
@@ -372,10 +419,10 @@ mod tests {
     fn direction_has_hysteresis_and_memory() {
         let mut d = DirectionDetector::new(DirectionThresholds::<f64>::standard());
         assert_eq!(d.friction(), Friction::Static { last_moving: None });
-        assert_eq!(d.update(0.1), Direction::Still);
-        assert_eq!(d.update(0.2), Direction::Up);
-        assert_eq!(d.update(0.1), Direction::Up); // above stop threshold
-        assert_eq!(d.update(0.01), Direction::Still);
+        assert_eq!(d.update(0.1, 0.01), Direction::Still);
+        assert_eq!(d.update(0.2, 0.01), Direction::Up);
+        assert_eq!(d.update(0.1, 0.01), Direction::Up); // above stop threshold
+        assert_eq!(d.update(0.01, 0.01), Direction::Still);
         // Still after raising: static friction in [0, friction_up].
         assert_eq!(
             d.friction(),
@@ -383,8 +430,48 @@ mod tests {
                 last_moving: Some(Direction::Up)
             }
         );
-        assert_eq!(d.update(-1.0), Direction::Down);
+        assert_eq!(d.update(-1.0, 0.01), Direction::Down);
         assert_eq!(d.friction(), Friction::Sliding(Direction::Down));
+    }
+
+    #[test]
+    fn a_creeping_boom_moves_once_it_has_crept_and_noise_does_not() {
+        let dt = 0.01;
+        // Raising at 0.13 °/s, under the start rate: moving once its rate has
+        // stayed over the stop rate for 0.25 s, and then held by the
+        // hysteresis; the same lowering.
+        for sign in [1.0, -1.0] {
+            let mut d = DirectionDetector::new(DirectionThresholds::<f64>::standard());
+            for _ in 0..100 {
+                assert_eq!(d.update(0.0, dt), Direction::Still);
+            }
+            let started = (0..100).find(|_| d.update(0.13 * sign, dt) != Direction::Still);
+            // The 25th or 26th update: 0.25 s of rate (sums of steps round).
+            assert!(started.is_some_and(|k| (24..=25).contains(&k)), "{started:?}");
+            let moving = if sign > 0.0 { Direction::Up } else { Direction::Down };
+            assert_eq!(d.friction(), Friction::Sliding(moving));
+            assert_eq!((0..100).map(|_| d.update(0.06 * sign, dt)).last(), Some(moving));
+        }
+        // A still boom whose rate stays under the stop rate never moves, nor
+        // does one whose rate crosses it for under 0.25 s at a time (at 2 Hz,
+        // 0.1 s over it each half period), nor the filters' start-up (0.09
+        // °/s for half a second), after power-up or a restart.
+        let mut d = DirectionDetector::new(DirectionThresholds::<f64>::standard());
+        for k in 0..3000 {
+            let t = f64::from(k) * dt;
+            let rate = if k < 1500 { 0.045 * (0.2 * t).cos() } else { 0.09 * (4.0 * core::f64::consts::PI * t).cos() };
+            assert_eq!(d.update(rate, dt), Direction::Still, "{t}");
+        }
+        for restart in [false, true] {
+            if restart {
+                d.filters_restarted();
+            } else {
+                d = DirectionDetector::new(DirectionThresholds::<f64>::standard());
+            }
+            for _ in 0..60 {
+                assert_eq!(d.update(0.09, dt), Direction::Still);
+            }
+        }
     }
 
     #[test]

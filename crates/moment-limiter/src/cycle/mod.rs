@@ -76,6 +76,12 @@ pub const SETTLE_S: f64 = 2.0;
 /// have changed).
 pub const PAUSE_GAP_S: f64 = 1.0;
 
+/// Most steps the signal chain takes through a short gap (see
+/// [`PAUSE_GAP_S`]): at 100 Hz one per sample up to 0.25 s, 40 ms steps
+/// over a full second (the filters are exact for any step, and the rope
+/// bank's pendulums sub-step on their own).
+pub const MAX_GAP_STEPS: usize = 25;
+
 /// Checked readings of one cycle.
 type Readings<T> = (PressureBar<T>, PressureBar<T>, BoomAngle<T>);
 
@@ -123,6 +129,9 @@ pub struct Limiter<T, M> {
     /// Bad cycles came since the last measurement (see
     /// [`PAUSE_GAP_S`]).
     interrupted: bool,
+    /// The last good sample's piston force (N) and boom angle (°, offset
+    /// removed): where a short gap is bridged from.
+    last_good: Option<(T, T)>,
     direction: DirectionDetector<T>,
     machine: StateMachine<T>,
     log: EventLog<T, EVENT_LOG_LEN>,
@@ -151,6 +160,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             bank: config.swing.map(StaticLoadBank::new),
             bank_idle_s: T::lit(0.0),
             interrupted: false,
+            last_good: None,
             direction: DirectionDetector::new(config.direction),
             machine: StateMachine::new(config.thresholds),
             log: EventLog::new(),

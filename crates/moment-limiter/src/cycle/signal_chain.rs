@@ -5,7 +5,7 @@
 use crane_model::loads::load_model::{BoomState, HookLoadModel};
 use crane_model::Real;
 
-use super::{Limiter, Readings, PAUSE_GAP_S};
+use super::{Limiter, Readings, MAX_GAP_STEPS, PAUSE_GAP_S};
 use crate::checks::{FaultKind, SensorFault};
 use crate::filter::exp_taylor3;
 use crate::io::{Channel, Measurement, SensorInputs};
@@ -75,6 +75,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         }
         self.force_filter.reset();
         self.angle_filter.reset();
+        self.direction.filters_restarted();
         self.previous_angle_deg = None;
         self.previous_rate_deg_s = None;
         self.moving_for_s = T::lit(0.0);
@@ -88,22 +89,96 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         angle: BoomAngle<T>,
         dt_s: T,
     ) -> Measurement<T> {
-        // The first good sample after bad ones: over a short gap (the
-        // pressure spike of a heavy load's stop, 0.2–0.5 s) the filters, the
-        // rate and the bank go on as if the gap had been one long step (they
-        // hold good samples only); restarted settled on this one sample,
-        // the filtered force sat at the spike's value (1.4 × the load after
-        // a stop at 6°) and OVERLOAD came at true u 0.906 as the fault ended.
-        let mut dt_s = dt_s;
-        if core::mem::replace(&mut self.interrupted, false) {
-            if self.bank_idle_s <= T::lit(PAUSE_GAP_S) {
-                dt_s += core::mem::replace(&mut self.bank_idle_s, T::lit(0.0));
-            } else {
-                self.restart_filters();
-            }
-        }
         let cal = &self.config.calibration;
         let force = piston_force_n(p1, p2, cal.p1_offset_bar, cal.p2_offset_bar);
+        let angle_deg = angle.degrees() - cal.angle_offset_deg;
+        // The first good sample after bad ones: over a short gap (the
+        // pressure spike of a heavy load's stop, 0.2–0.5 s) the chain goes
+        // on through the gap on the straight line from the last good sample
+        // to this one (it holds good samples only). Restarted settled on
+        // this one sample, the filtered force sat at the spike's value (1.4 ×
+        // the load after a stop at 6°); taken as one long step, the filtered
+        // angle jumped to its new value at once, its acceleration came as
+        // one spike (220 °/s²) and was missing after it while the force's
+        // rise was not, and the stop read 1.14 × the load (OVERLOAD at true
+        // u 0.906 and 0.873 as the fault ended).
+        let mut dt_s = dt_s;
+        if core::mem::replace(&mut self.interrupted, false) {
+            let gap_s = core::mem::replace(&mut self.bank_idle_s, T::lit(0.0));
+            match self.last_good {
+                Some(from) if gap_s <= T::lit(PAUSE_GAP_S) => {
+                    dt_s = self.fill_gap(from, (force, angle_deg), gap_s, dt_s);
+                }
+                _ => {
+                    // The filters start afresh on this sample; the swing
+                    // goes on over the gap.
+                    self.restart_filters();
+                    dt_s += gap_s;
+                }
+            }
+        }
+        self.last_good = Some((force, angle_deg));
+        let step = self.advance_chain(force, angle_deg, dt_s);
+        let (angle_f, rate_f, accel_f) = (step.angle_deg, step.rate_deg_s, step.accel_deg_s2);
+        // Time alignment (see the type's doc): the filtered force and the
+        // filtered angle both stand for t − d − lag.
+        let (now, rate_now) = extrapolate(
+            angle_f,
+            rate_f,
+            accel_f,
+            self.config.effective_angle_sensor_lag_s() + self.force_filter.delay_s(dt_s),
+        );
+        let to_rad = T::pi() / T::lit(180.0);
+        Measurement {
+            piston_force_n: step.force_n,
+            boom_angle_deg: now,
+            rate_deg_s: rate_f,
+            accel_deg_s2: accel_f,
+            moving_for_s: self.moving_for_s,
+            direction: step.direction,
+            friction: self.direction.friction(),
+            static_friction_share: self.static_friction_share,
+            boom: BoomState {
+                angle_rad: angle_f * to_rad,
+                rate_rad_s: rate_f * to_rad,
+            },
+            boom_now: BoomState {
+                angle_rad: now * to_rad,
+                rate_rad_s: rate_now * to_rad,
+            },
+            tan_swing: step.tan_swing,
+        }
+    }
+
+    /// Runs the chain through a gap of `gap_s` (the bad cycles) before the
+    /// sample `to` that came `dt_s` after the last bad one, on the straight
+    /// line from the last good sample `from` (force N, angle °): sub-steps
+    /// of the sample period, or of 1/[`MAX_GAP_STEPS`] of the interval when
+    /// that is longer (a bounded loop). Returns the step left for `to`.
+    fn fill_gap(&mut self, from: (T, T), to: (T, T), gap_s: T, dt_s: T) -> T {
+        let total = gap_s + dt_s;
+        if !(dt_s > T::lit(0.0) && total.is_finite()) {
+            return total;
+        }
+        let h = dt_s.max(total / T::lit(MAX_GAP_STEPS as f64));
+        let mut t = T::lit(0.0);
+        for _ in 1..MAX_GAP_STEPS {
+            // The last step (to the sample itself) is at least h/2 long.
+            if t + h * T::lit(1.5) > total {
+                break;
+            }
+            t += h;
+            let s = t / total;
+            self.advance_chain(from.0 + s * (to.0 - from.0), from.1 + s * (to.1 - from.1), h);
+        }
+        total - t
+    }
+
+    /// One step of the chain on the piston force `force` (N, offsets
+    /// removed) and the boom angle `angle_deg` (°, offset removed), `dt_s`
+    /// after the previous: the sensor lag on the force, the filters, rate,
+    /// acceleration, direction, the seals' release and the rope bank's swing.
+    fn advance_chain(&mut self, force: T, angle_deg: T, dt_s: T) -> ChainStep<T> {
         // The force through the angle sensor's lag too: force, angle, rate
         // and acceleration then share one delay (see "Time alignment").
         let force = match self.force_lag.as_mut() {
@@ -111,9 +186,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             None => force,
         };
         let force_f = self.force_filter.update(force, dt_s);
-        let angle_f = self
-            .angle_filter
-            .update(angle.degrees() - cal.angle_offset_deg, dt_s);
+        let angle_f = self.angle_filter.update(angle_deg, dt_s);
         // Rate and acceleration as differences of the filtered angle: the
         // filter already removed the noise, and no further filter may delay
         // them behind the force (their inertia term is in the force now).
@@ -128,7 +201,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         };
         self.previous_rate_deg_s = Some(rate_f);
         let previous_direction = self.direction.current();
-        let direction = self.direction.update(rate_f);
+        let direction = self.direction.update(rate_f, dt_s);
         self.moving_for_s = if direction == Direction::Still {
             T::lit(0.0)
         } else if direction == previous_direction {
@@ -142,20 +215,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         } else {
             T::lit(1.0)
         };
-        // Time alignment (see the type's doc): the filtered force and the
-        // filtered angle both stand for t − d − lag.
-        let at_force = angle_f;
-        let (now, rate_now) = extrapolate(
-            angle_f,
-            rate_f,
-            accel_f,
-            self.config.effective_angle_sensor_lag_s() + self.force_filter.delay_s(dt_s),
-        );
         let to_rad = T::pi() / T::lit(180.0);
-        let boom = BoomState {
-            angle_rad: at_force * to_rad,
-            rate_rad_s: rate_f * to_rad,
-        };
         let settling = self.since_restart_s.is_some();
         let tan_swing = match self.bank.as_mut() {
             Some(b) => {
@@ -166,37 +226,39 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
                     // acceleration is not the boom's, and no average
                     // starts from a reading that is none yet.
                     if self.since_restart_s == Some(T::lit(0.0)) {
-                        b.rebase(boom.angle_rad);
+                        b.rebase(angle_f * to_rad);
                     }
                     b.restart_averages();
                 }
                 let accel = if settling { T::lit(0.0) } else { accel_f * to_rad };
-                b.advance(
-                    boom.angle_rad,
-                    boom.rate_rad_s,
-                    accel,
-                    dt_s + core::mem::replace(&mut self.bank_idle_s, T::lit(0.0)),
-                )
+                b.advance(angle_f * to_rad, rate_f * to_rad, accel, dt_s)
             }
             None => T::lit(0.0),
         };
-        Measurement {
-            piston_force_n: force_f,
-            boom_angle_deg: now,
+        ChainStep {
+            force_n: force_f,
+            angle_deg: angle_f,
             rate_deg_s: rate_f,
             accel_deg_s2: accel_f,
-            moving_for_s: self.moving_for_s,
             direction,
-            friction: self.direction.friction(),
-            static_friction_share: self.static_friction_share,
-            boom,
-            boom_now: BoomState {
-                angle_rad: now * to_rad,
-                rate_rad_s: rate_now * to_rad,
-            },
             tan_swing,
         }
     }
+}
+
+/// What one step of the signal chain gives ([`Limiter::advance_chain`]).
+#[derive(Debug, Clone, Copy)]
+struct ChainStep<T> {
+    /// Filtered piston force (N).
+    force_n: T,
+    /// Filtered boom angle (°).
+    angle_deg: T,
+    /// Its rate (°/s) and acceleration (°/s²).
+    rate_deg_s: T,
+    accel_deg_s2: T,
+    direction: Direction,
+    /// The paid-out rope's tan φ (0 without the bank).
+    tan_swing: T,
 }
 
 #[cfg(test)]
