@@ -151,11 +151,24 @@ impl<T: Real> Default for Consistency<T> {
 
 impl<T: Real> Consistency<T> {
     /// A hypothesis that has not weighed yet: D_k = [`CONSISTENT`], the
-    /// most a voter may have (its W̄_k starts at or above W_k, so its first
-    /// ρ_k ≤ 1 can only lower ρ; a wrong rope's swing drives its D_k up
-    /// within [`CONSISTENCY_TAU_S`]).
+    /// most a voter may have (a wrong rope's swing drives its D_k up within
+    /// [`CONSISTENCY_TAU_S`]).
     pub fn new() -> Self {
         Self { fast_kg: None, inconsistency: T::lit(CONSISTENT) }
+    }
+
+    /// A hypothesis that starts weighing with W_k = `w_kg` while its W̄_k
+    /// starts at `start_kg` (the bank's weighing: a rope that becomes usable
+    /// in motion has not followed the swing, and its W_k of that instant is
+    /// no weighing). Its D_k starts at |W_k/W̄_k − 1|, and no lower than
+    /// [`CONSISTENT`]: a rope that reads what the bank weighed may vote at
+    /// once, one that reads otherwise only once its ratio has settled
+    /// (voting at once, a rope restarted at rest at 80° and reading 1.3 ×
+    /// the bank's weighing raised the reading to 2.2 × the load).
+    pub fn starting(w_kg: T, start_kg: T) -> Self {
+        let d = (w_kg / start_kg - T::lit(1.0)).abs();
+        let inconsistency = if d.is_finite() { d.max(T::lit(CONSISTENT)) } else { T::lit(1.0) };
+        Self { fast_kg: None, inconsistency }
     }
 
     /// Passes W_k (kg) through S_k with the stage's `gain`; returns S_k(W_k).

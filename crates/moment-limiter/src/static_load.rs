@@ -109,6 +109,22 @@
 //! passed 1.05: a missed overload); at rest after a move no lower than the
 //! move's weighing either (below).
 //!
+//! ## In motion: the averages move only while every rope can weigh
+//!
+//! A rope whose factor is unusable is left out of W_fast, but it may be the
+//! true one: the ropes left read the swing of the wrong length, and their
+//! lowest average is not the weighing (lowering from 82° at 10 °/s on a
+//! 4.1 m rope the short ropes cannot weigh for seconds, and the others'
+//! averages fell to 0.76 of the load: an overload cut at true u 1.09;
+//! from 85° they rose to 1.5 × the load). So in motion, while a possible
+//! rope cannot weigh, every average and W_slow itself stand (the load does
+//! not change in the air; a heavier one is W_fast's), and they move again
+//! when every possible rope weighs. At rest, while a possible rope has no
+//! average (it could not weigh as the move ended), W_slow does not rise
+//! above the bank's weighing either. The ropes never agree while the boom
+//! creeps (its rate over [`SETTLED_RAD_S`]): its force may still carry the
+//! seals' sliding friction.
+//!
 //! ## At rest after a move: the move's weighing held
 //!
 //! After a move stops, nothing in the bank damps the predicted swings: at a
@@ -193,6 +209,14 @@ pub const AGREEMENT: f64 = 0.005;
 /// all agree.
 pub const MOVING_RAD_S: f64 = 0.15 * core::f64::consts::PI / 180.0;
 
+/// Boom rate (rad/s, 0.05 °/s: the limiter's stop threshold) above which
+/// the ropes never agree: a boom creeping under [`MOVING_RAD_S`] carries the
+/// seals' sliding friction in its force until the limiter sees it move
+/// ([`crate::load_estimate::DirectionThresholds::creep_s`]), and the
+/// averages must not take that for the weighing (raising at 0.13 °/s, they
+/// did: 1.055 × the load, OVERLOAD at true u 0.898).
+pub const SETTLED_RAD_S: f64 = 0.05 * core::f64::consts::PI / 180.0;
+
 /// Cut-off of the one first-order stage W_fast goes through (Hz): the
 /// load's bounce on the boom (1–2 Hz near rated load in a held rope, ±25 %
 /// of the load's pull after a 10 s move stops) passes the force filter at
@@ -258,6 +282,8 @@ pub struct StaticLoadBank<T> {
     moved: bool,
     /// The boom's rate at the last advance is below [`MOVING_RAD_S`].
     still: bool,
+    /// The boom's rate at the last advance is below [`SETTLED_RAD_S`].
+    settled: bool,
     /// How long the boom has been moving without a pause (s).
     moving_s: T,
     /// How long the boom has been still (s).
@@ -303,6 +329,7 @@ impl<T: Real> StaticLoadBank<T> {
             fast_stage: None,
             moved: false,
             still: true,
+            settled: true,
             moving_s: T::lit(0.0),
             still_s: T::lit(0.0),
             last_kg: None,
@@ -354,6 +381,7 @@ impl<T: Real> StaticLoadBank<T> {
             T::lit(0.0)
         };
         let still = rate_rad_s.abs() <= T::lit(MOVING_RAD_S);
+        self.settled = rate_rad_s.abs() <= T::lit(SETTLED_RAD_S);
         if still {
             // A move ends: its last weighing is held (see `update`).
             if !self.still && self.moving_s >= T::lit(MOVE_FOR_HOLD_S) {
@@ -483,10 +511,12 @@ impl<T: Real> StaticLoadBank<T> {
         // Every possible rope (one whose load would be above ground) weighs:
         // agreement among fewer says nothing (one alone always agrees).
         let mut all_weigh = true;
-        for (slot, h) in factors.iter_mut().zip(self.hypotheses.iter()) {
+        let mut possible = [false; HYPOTHESES];
+        for ((slot, h), p) in factors.iter_mut().zip(self.hypotheses.iter()).zip(possible.iter_mut()) {
             if !self.possible(h, tip_height) {
                 continue;
             }
+            *p = true;
             *slot = self.factor(h, tan_theta);
             match *slot {
                 Some(f) => {
@@ -501,9 +531,18 @@ impl<T: Real> StaticLoadBank<T> {
         let within = |spread: f64| {
             all_weigh && matches!((f_lo, f_hi), (Some(lo), Some(hi)) if hi <= lo * T::lit(1.0 + spread))
         };
-        let agree = !self.moved || self.still && within(AGREEMENT);
+        let agree = self.settled && (!self.moved || self.still && within(AGREEMENT));
         let mut fast: Option<T> = None;
         let still = self.still;
+        // In motion the averages move only while every possible rope weighs:
+        // a rope that cannot (a short one swung hard at a steep boom) is
+        // the true one as often as not, and the ropes left read the wrong
+        // factor. Lowering from 82° at 10 °/s on a 4.1 m rope, the averages
+        // of the ropes left fell to 0.76 of the load and the overload was
+        // cut at true u 1.09 (campaign #9090); held, they keep the weighing
+        // from before (the load does not change in motion; a heavier one
+        // is W_fast's).
+        let averaging = still || all_weigh;
         let prev_slow = self.slow_kg;
         for (h, factor) in self.hypotheses.iter_mut().zip(factors.iter()) {
             let Some(f) = *factor else {
@@ -522,18 +561,26 @@ impl<T: Real> StaticLoadBank<T> {
             // becomes possible as the tip rises has not followed the true
             // swing, and its W_k of one instant (0.71 of the load with a 3 m
             // rope at 55°) is no weighing. It starts at its own W_k when
-            // that is higher (in the min it cannot raise W_slow above the
-            // ropes already weighing).
+            // that is higher: in the min it cannot lower W_slow, and in
+            // motion it takes part only once every rope weighs (see
+            // `averaging`), when the ropes already weighing are in the min
+            // too. (Started at the bank's weighing instead, the short ropes
+            // that become usable lowering from 80° averaged their low
+            // readings down to 0.92 of the load.)
             let start = prev_slow.map_or(w, |p| p.max(w));
-            if h.slow_kg.is_none() {
-                h.jump = Consistency::new();
+            let mut stages = h.slow_kg.unwrap_or([start; SLOW_STAGES]);
+            if h.jump.fast_kg().is_none() {
+                // Its first ratio against the average it starts, or takes
+                // up again, with.
+                h.jump = Consistency::starting(w, stages.last().copied().unwrap_or(start));
             }
             h.jump.smooth(w, gain);
-            let mut stages = h.slow_kg.unwrap_or([start; SLOW_STAGES]);
-            let mut input = w;
-            for st in stages.iter_mut() {
-                *st += alpha * (input - *st);
-                input = *st;
+            if averaging {
+                let mut input = w;
+                for st in stages.iter_mut() {
+                    *st += alpha * (input - *st);
+                    input = *st;
+                }
             }
             h.slow_kg = Some(stages);
         }
@@ -554,7 +601,10 @@ impl<T: Real> StaticLoadBank<T> {
         // Only the hypotheses that weigh now vote: a frozen average is a
         // weighing from before the rope became impossible.
         let mut slow: Option<T> = None;
-        for (h, factor) in self.hypotheses.iter_mut().zip(factors.iter()) {
+        // At rest, a possible rope without an average (it could not weigh
+        // at the end of the move): maybe the true one.
+        let mut unweighed = false;
+        for ((h, factor), &possible) in self.hypotheses.iter_mut().zip(factors.iter()).zip(possible.iter()) {
             if agree {
                 // Raised to W_fast at once (a lift-off), lowered only at the
                 // averages' pace: the force leads the lagging angle at the
@@ -568,6 +618,7 @@ impl<T: Real> StaticLoadBank<T> {
             if let (true, Some(last)) = (factor.is_some() || still, last) {
                 slow = Some(slow.map_or(last, |m: T| m.min(last)));
             }
+            unweighed |= still && possible && last.is_none();
         }
         // At rest after a move, the move's last weighing is held while the
         // ropes disagree (see the module doc): the swing of a short rope at
@@ -575,10 +626,20 @@ impl<T: Real> StaticLoadBank<T> {
         if agree {
             self.hold_kg = None;
         }
-        // No hypothesis weighs (in motion: every rope's factor is unusable,
-        // a steep boom swung hard): the last weighing stands until one can
-        // weigh again, and the averages that then start begin from it.
-        let slow = slow.or(prev_slow);
+        // In motion while a possible rope cannot weigh, the bank's weighing
+        // stands as the averages do (the lowest of the ropes left is not
+        // the weighing: the true rope may be the one that left); and when
+        // no rope weighs, the last weighing stands until one can weigh
+        // again, and the averages that then start begin from it.
+        let slow = if averaging { slow.or(prev_slow) } else { prev_slow.or(slow) };
+        // At rest, while a possible rope has no average, W_slow does not
+        // rise above the bank's weighing: the lowest of the other ropes'
+        // averages is not the weighing when the true rope is the one
+        // missing (it stood for it at 1.017 × the load after a raise to 80°).
+        let slow = match (slow, prev_slow) {
+            (Some(s), Some(p)) if unweighed => Some(s.min(p)),
+            _ => slow,
+        };
         self.slow_kg = slow;
         let now = slow.map_or(fast, |s| s.max(fast));
         // The force cannot weigh while a possible rope cannot or the ropes'
