@@ -85,11 +85,21 @@ fn small_campaign_misses_no_overload_and_alarms_none_early() {
 /// - #8345 lowers a 4.3 t load in 9 s from 84° on a 5.6 m held rope: at the
 ///   steep start no rope hypothesis could weigh and the reading fell to
 ///   −2.4 t, and it still read 0.57 of the load when true u passed 1.05;
-/// - #572 and #4152: a FAULT at a stop's pressure spike, after which the
-///   filters restarted settled on the spike's value and OVERLOAD came at true
-///   u 0.58 and 0.84 (now a gap under 1 s pauses the signal chain); #572 is
-///   asserted neither missed nor false here, its early alarm is a known gap
-///   (below);
+/// - #4152: a FAULT at a stop's pressure spike, after which the filters
+///   restarted settled on the spike's value and OVERLOAD came at true u 0.84
+///   (now a gap under 1 s pauses the signal chain);
+/// - #4528 and #8272 (lowering 3 t to 5–6°): the stop's pressure spike
+///   FAULTs for 0.2–0.25 s; taken as one long step, the gap put the boom's
+///   whole deceleration into one sample of the filtered angle (220 °/s²) and
+///   none after it while the force's rise came on, and the stop read 1.14 ×
+///   the load: OVERLOAD at true u 0.906 and 0.873 (now the chain runs through
+///   the gap on the straight line between its good samples);
+/// - #572 (4.1 t lowered 85° → 10° at 7 °/s on a 3 m held rope) and #9090
+///   (4.1 t, 82° → 7° at 10 °/s, 4.1 m): at the steep start the short ropes
+///   cannot weigh; the ropes left read the wrong swing, and their averages
+///   went to 1.5 × the load (#572: OVERLOAD at true u 0.60) or 0.76 of it
+///   (#9090: cut at u 1.09); now the averages and the bank's weighing stand
+///   in motion while a possible rope cannot weigh;
 /// - #7297: an over-rated lift-off cut at u 1.12, a FAULT, then back to the
 ///   OVERLOAD latched before it: graded at its onset, not again;
 /// - #1131, #2734, #3222, #3326: cranes whose angle sensor lags 0.29–0.30 s
@@ -98,19 +108,35 @@ fn small_campaign_misses_no_overload_and_alarms_none_early() {
 ///   calibration now learns the lag (0.275–0.286 s) and none alarms.
 #[test]
 fn the_large_campaigns_hard_cases_are_neither_missed_nor_early() {
-    let hard = ["8345", "572", "4152", "7297", "1131", "2734", "3222", "3326"];
-    for v in only(&hard) {
+    let hard = ["8345", "572", "4152", "4528", "8272", "9090", "7297", "1131", "2734", "3222", "3326"];
+    assert_none_missed_early_or_false(&only("1", &hard));
+}
+
+/// The cases the campaign with `--seed 2` graded early: #9085 and #7769 raise
+/// 3.2–4.6 t at 0.13–0.27 °/s after a lift-off (seal friction), under the
+/// 0.15 °/s at which a boom starts moving: the up-friction stayed in the force
+/// as load (1.055–1.065 ×) and OVERLOAD came at true u 0.898 and 0.901 (now a
+/// rate over 0.05 °/s for 0.25 s is a move, and the ropes' averages do not
+/// take a creeping boom's reading); #2186 (a lift-off at 9°, then a raise to
+/// 81° on a held rope) alarmed at true u 0.902 before the bank's averages
+/// stood while a short rope could not weigh.
+#[test]
+fn the_second_campaigns_creeping_raises_are_not_early() {
+    assert_none_missed_early_or_false(&only("2", &["9085", "7769", "2186"]));
+}
+
+fn assert_none_missed_early_or_false(runs: &[serde_json::Value]) {
+    for v in runs {
         assert_eq!(v["missed"], false, "#{} missed: {v}", v["index"]);
         assert_eq!(v["false_overload"], false, "#{} false OVERLOAD: {v}", v["index"]);
-        if v["index"] != 572 {
-            assert_eq!(v["early"], false, "#{} early: {v}", v["index"]);
-        }
+        assert_eq!(v["early"], false, "#{} early: {v}", v["index"]);
     }
 }
 
-/// Runs the scenarios `indices` of the 10 000-scenario campaign alone.
-fn only(indices: &[&str]) -> Vec<serde_json::Value> {
-    let mut args = vec!["--scenarios", "10000", "--seed", "1", "--json"];
+/// Runs the scenarios `indices` of the 10 000-scenario campaign of `seed`
+/// alone.
+fn only(seed: &str, indices: &[&str]) -> Vec<serde_json::Value> {
+    let mut args = vec!["--scenarios", "10000", "--seed", seed, "--json"];
     for i in indices {
         args.extend(["--only", i]);
     }
@@ -119,23 +145,27 @@ fn only(indices: &[&str]) -> Vec<serde_json::Value> {
     let v: Vec<serde_json::Value> = scenario_lines(&json).iter().map(|l| serde_json::from_str(l).expect("json")).collect();
     for s in &v {
         println!(
-            "#{} first OVERLOAD {} s at true u {}, fault {}, true u 1.0 at {} s, 1.05 at {} s",
-            s["index"], s["first_overload_s"], s["min_u_at_overload_onset"], s["first_fault"], s["t_true_overload_s"], s["t_true_1_05_s"]
+            "#{} first OVERLOAD {} s at true u {}, fault {}, true u 1.0 at {} s, 1.05 at {} s, lift-off delay {} s",
+            s["index"], s["first_overload_s"], s["min_u_at_overload_onset"], s["first_fault"], s["t_true_overload_s"], s["t_true_1_05_s"], s["lift_off_delay_s"]
         );
     }
     v
 }
 
-/// KNOWN GAP: the 10 000-scenario campaign's remaining early OVERLOADs.
-/// #4528 and #8272 (crane 0, the thesis pendulum; lowering 3 t to 5–6° in
-/// 32–36 s): the stop's pressure spike and the load's bounce read 1.10–1.15 ×
-/// the load at rest for 0.1–0.5 s and set the overload latch at true u
-/// 0.906 and 0.873. #572 (4.1 t lowered 85° → 10° in 10.8 s, 7 °/s, on a 3 m
-/// held rope, a FAULT at the start): the swing reads 0.82–1.24 × the load and
-/// OVERLOAD comes at true u 0.9085, one 10 ms sample before 1/1.1.
+/// KNOWN GAP: in the campaign with `--seed 3`, #2455 and #2967 lift 10.9 t and
+/// 10.5 t (rated 10 t) off at 80° and 85° over 2–3 s on crane 7 (seal
+/// friction, a 0.25 s angle sensor). At that angle the load's force on the
+/// cylinder is 106 kN, and the reading settles at 0.95 of the load; with the
+/// filters' and the sensor's delay OVERLOAD comes 1.0–1.26 s after the load
+/// leaves the ground, at true u 1.05 and 1.09 (missed: after 1.05). The
+/// campaigns with seeds 1 and 2 have no missed overload and none later than
+/// 1 s after a lift-off. The code before this change graded them the same.
 #[test]
-#[ignore = "KNOWN GAP: 3 early OVERLOADs remain in the 10 000-scenario campaign (#572 at true u 0.9085, #4528 at 0.906, #8272 at 0.873)"]
-fn the_large_campaigns_remaining_early_cases() {
-    let early: Vec<_> = only(&["572", "4528", "8272"]).into_iter().filter(|v| v["early"] == true).map(|v| v["index"].clone()).collect();
-    assert!(early.is_empty(), "early: {early:?}");
+#[ignore = "KNOWN GAP: two lift-offs at 80-85 deg in the seed-3 campaign are cut at true u 1.05 and 1.09, 1.0-1.26 s after leaving the ground"]
+fn the_third_campaigns_steep_lift_offs_are_cut_in_time() {
+    let runs = only("3", &["2455", "2967"]);
+    assert_none_missed_early_or_false(&runs);
+    for v in &runs {
+        assert!(v["lift_off_delay_s"].as_f64().is_some_and(|d| d <= 1.0), "#{} lift-off delay: {v}", v["index"]);
+    }
 }
