@@ -118,7 +118,8 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             }
         }
         self.last_good = Some((force, angle_deg));
-        let step = self.advance_chain(force, angle_deg, dt_s);
+        let filtered = self.filter_step(force, angle_deg, dt_s);
+        let step = self.advance_bank(filtered, dt_s);
         let (angle_f, rate_f, accel_f) = (step.angle_deg, step.rate_deg_s, step.accel_deg_s2);
         // Time alignment (see the type's doc): the filtered force and the
         // filtered angle both stand for t − d − lag.
@@ -169,7 +170,11 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             }
             t += h;
             let s = t / total;
-            self.advance_chain(from.0 + s * (to.0 - from.0), from.1 + s * (to.1 - from.1), h);
+            let filtered = self.filter_step(from.0 + s * (to.0 - from.0), from.1 + s * (to.1 - from.1), h);
+            // The swing too: taken over the gap in one step with the
+            // acceleration at its end, a held load raised to 66° read 1.10 ×
+            // (campaign seed 3, #6036).
+            self.advance_bank(filtered, h);
         }
         total - t
     }
@@ -177,8 +182,8 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     /// One step of the chain on the piston force `force` (N, offsets
     /// removed) and the boom angle `angle_deg` (°, offset removed), `dt_s`
     /// after the previous: the sensor lag on the force, the filters, rate,
-    /// acceleration, direction, the seals' release and the rope bank's swing.
-    fn advance_chain(&mut self, force: T, angle_deg: T, dt_s: T) -> ChainStep<T> {
+    /// acceleration, direction and the seals' release.
+    fn filter_step(&mut self, force: T, angle_deg: T, dt_s: T) -> ChainStep<T> {
         // The force through the angle sensor's lag too: force, angle, rate
         // and acceleration then share one delay (see "Time alignment").
         let force = match self.force_lag.as_mut() {
@@ -215,6 +220,19 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         } else {
             T::lit(1.0)
         };
+        ChainStep {
+            force_n: force_f,
+            angle_deg: angle_f,
+            rate_deg_s: rate_f,
+            accel_deg_s2: accel_f,
+            direction,
+            tan_swing: T::lit(0.0),
+        }
+    }
+
+    /// The rope bank's swing advanced to the filtered step `step`, `dt_s`
+    /// after its last advance; returns `step` with the paid-out rope's tan φ.
+    fn advance_bank(&mut self, step: ChainStep<T>, dt_s: T) -> ChainStep<T> {
         let to_rad = T::pi() / T::lit(180.0);
         let settling = self.since_restart_s.is_some();
         let tan_swing = match self.bank.as_mut() {
@@ -226,27 +244,21 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
                     // acceleration is not the boom's, and no average
                     // starts from a reading that is none yet.
                     if self.since_restart_s == Some(T::lit(0.0)) {
-                        b.rebase(angle_f * to_rad);
+                        b.rebase(step.angle_deg * to_rad);
                     }
                     b.restart_averages();
                 }
-                let accel = if settling { T::lit(0.0) } else { accel_f * to_rad };
-                b.advance(angle_f * to_rad, rate_f * to_rad, accel, dt_s)
+                let accel = if settling { T::lit(0.0) } else { step.accel_deg_s2 * to_rad };
+                b.advance(step.angle_deg * to_rad, step.rate_deg_s * to_rad, accel, dt_s)
             }
             None => T::lit(0.0),
         };
-        ChainStep {
-            force_n: force_f,
-            angle_deg: angle_f,
-            rate_deg_s: rate_f,
-            accel_deg_s2: accel_f,
-            direction,
-            tan_swing,
-        }
+        ChainStep { tan_swing, ..step }
     }
 }
 
-/// What one step of the signal chain gives ([`Limiter::advance_chain`]).
+/// What one step of the signal chain gives ([`Limiter::filter_step`],
+/// [`Limiter::advance_bank`]).
 #[derive(Debug, Clone, Copy)]
 struct ChainStep<T> {
     /// Filtered piston force (N).
