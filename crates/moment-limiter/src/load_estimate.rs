@@ -75,19 +75,25 @@ pub struct DirectionThresholds<T> {
     pub start_deg_s: T,
     /// |rate| below which a moving boom is still (< `start_deg_s`: hysteresis).
     pub stop_deg_s: T,
-    /// Time (s) a still boom's rate must stay beyond `stop_deg_s` the same
-    /// way for it to be moving: the seals slide at any speed, and a raise
-    /// at 0.13 °/s (below `start_deg_s`) kept the up-friction in the force
-    /// as load (+6 %, an OVERLOAD at true u 0.898). Counted only once the
-    /// filters have run [`CREEP_AFTER_START_S`].
+    /// Time (s) a still boom's rate must stay below −`stop_deg_s` for it
+    /// to be lowering: the seals slide at any speed, and a boom creeping
+    /// down under `start_deg_s` has the down-friction out of its force
+    /// (the load reads low). Counted only once the filters have run
+    /// [`CREEP_AFTER_START_S`]. Only downward: the same rule upward would
+    /// take the up-friction out of the force, and a 110 % load taken up at
+    /// rest at 80° shows 0.08 °/s upward for 0.25 s (the sensor and the
+    /// boom answering the jerk), which as a raise cut the overload 0.37 s
+    /// later. A boom creeping up under `start_deg_s` reads high by its
+    /// up-friction instead (an OVERLOAD early, at true u 0.898–0.901, in
+    /// two raises at 0.13–0.27 °/s of the campaign with `--seed 2`).
     pub creep_s: T,
 }
 
 impl<T: Real> DirectionThresholds<T> {
     /// Defaults: start at 0.15 °/s, stop below 0.05 °/s (the thesis's slowest
-    /// manoeuvre runs at about 1.3 °/s), or creeping at over 0.05 °/s for
-    /// 0.25 s (the filtered rate's noise at rest stays under 0.03 °/s, in a
-    /// lift-off too).
+    /// manoeuvre runs at about 1.3 °/s), or creeping down at over 0.05 °/s
+    /// for 0.25 s (the filtered rate's noise at rest stays under 0.03 °/s,
+    /// in a lift-off too).
     pub fn standard() -> Self {
         Self {
             start_deg_s: T::lit(0.15),
@@ -117,8 +123,7 @@ pub struct DirectionDetector<T> {
     thresholds: DirectionThresholds<T>,
     current: Direction,
     last_moving: Option<Direction>,
-    /// How long a still boom's rate has been beyond the stop threshold the
-    /// same way (s; negative: downward).
+    /// How long a still boom's rate has been below −`stop_deg_s` (s).
     creeping_s: T,
     /// Time since the filters started (s), up to [`CREEP_AFTER_START_S`].
     age_s: T,
@@ -150,13 +155,11 @@ impl<T: Real> DirectionDetector<T> {
         let zero = T::lit(0.0);
         let dt = if dt_s > zero { dt_s } else { zero };
         self.age_s = (self.age_s + dt).min(T::lit(CREEP_AFTER_START_S));
-        // A still boom creeping: how long its rate has stayed beyond the
-        // stop threshold one way (restarted when it turns or falls inside).
+        // A still boom creeping down: how long its rate has stayed below
+        // the stop threshold (restarted when it rises inside).
         let counts = self.age_s >= T::lit(CREEP_AFTER_START_S);
-        self.creeping_s = if counts && rate_deg_s > th.stop_deg_s {
-            self.creeping_s.max(zero) + dt
-        } else if counts && rate_deg_s < -th.stop_deg_s {
-            self.creeping_s.min(zero) - dt
+        self.creeping_s = if counts && rate_deg_s < -th.stop_deg_s {
+            self.creeping_s + dt
         } else {
             zero
         };
@@ -165,8 +168,7 @@ impl<T: Real> DirectionDetector<T> {
             Direction::Down if rate_deg_s < -th.stop_deg_s => Direction::Down,
             _ if rate_deg_s > th.start_deg_s => Direction::Up,
             _ if rate_deg_s < -th.start_deg_s => Direction::Down,
-            _ if self.creeping_s > th.creep_s => Direction::Up,
-            _ if self.creeping_s < -th.creep_s => Direction::Down,
+            _ if self.creeping_s > th.creep_s => Direction::Down,
             _ => Direction::Still,
         };
         if self.current != Direction::Still {
@@ -435,27 +437,30 @@ mod tests {
     }
 
     #[test]
-    fn a_creeping_boom_moves_once_it_has_crept_and_noise_does_not() {
+    fn a_boom_creeping_down_lowers_and_noise_and_a_creep_up_do_not() {
         let dt = 0.01;
-        // Raising at 0.13 °/s, under the start rate: moving once its rate has
-        // stayed over the stop rate for 0.25 s, and then held by the
-        // hysteresis; the same lowering.
-        for sign in [1.0, -1.0] {
-            let mut d = DirectionDetector::new(DirectionThresholds::<f64>::standard());
-            for _ in 0..100 {
-                assert_eq!(d.update(0.0, dt), Direction::Still);
-            }
-            let started = (0..100).find(|_| d.update(0.13 * sign, dt) != Direction::Still);
-            // The 25th or 26th update: 0.25 s of rate (sums of steps round).
-            assert!(started.is_some_and(|k| (24..=25).contains(&k)), "{started:?}");
-            let moving = if sign > 0.0 { Direction::Up } else { Direction::Down };
-            assert_eq!(d.friction(), Friction::Sliding(moving));
-            assert_eq!((0..100).map(|_| d.update(0.06 * sign, dt)).last(), Some(moving));
+        // Lowering at 0.13 °/s, under the start rate: moving once its rate
+        // has stayed under the stop rate for 0.25 s, then held by the
+        // hysteresis.
+        let mut d = DirectionDetector::new(DirectionThresholds::<f64>::standard());
+        for _ in 0..100 {
+            assert_eq!(d.update(0.0, dt), Direction::Still);
         }
-        // A still boom whose rate stays under the stop rate never moves, nor
-        // does one whose rate crosses it for under 0.25 s at a time (at 2 Hz,
-        // 0.1 s over it each half period), nor the filters' start-up (0.09
-        // °/s for half a second), after power-up or a restart.
+        let started = (0..100).find(|_| d.update(-0.13, dt) != Direction::Still);
+        // The 25th or 26th update: 0.25 s of rate (sums of steps round).
+        assert!(started.is_some_and(|k| (24..=25).contains(&k)), "{started:?}");
+        assert_eq!(d.friction(), Friction::Sliding(Direction::Down));
+        assert_eq!((0..100).map(|_| d.update(-0.06, dt)).last(), Some(Direction::Down));
+        // The same rate upward is no raise: its friction is not taken out
+        // of the force (a load taken up shows it too).
+        let mut d = DirectionDetector::new(DirectionThresholds::<f64>::standard());
+        for _ in 0..500 {
+            assert_eq!(d.update(0.13, dt), Direction::Still);
+        }
+        // A still boom whose rate stays over −0.05 °/s never moves, nor one
+        // whose rate dips under it for less than 0.25 s at a time (at 2 Hz,
+        // 0.1 s each period), nor the filters' start-up (−0.09 °/s for half
+        // a second), after power-up or a restart.
         let mut d = DirectionDetector::new(DirectionThresholds::<f64>::standard());
         for k in 0..3000 {
             let t = f64::from(k) * dt;
@@ -469,7 +474,7 @@ mod tests {
                 d = DirectionDetector::new(DirectionThresholds::<f64>::standard());
             }
             for _ in 0..60 {
-                assert_eq!(d.update(0.09, dt), Direction::Still);
+                assert_eq!(d.update(-0.09, dt), Direction::Still);
             }
         }
     }
