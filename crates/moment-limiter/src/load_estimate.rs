@@ -75,24 +75,23 @@ pub struct DirectionThresholds<T> {
     pub start_deg_s: T,
     /// |rate| below which a moving boom is still (< `start_deg_s`: hysteresis).
     pub stop_deg_s: T,
-    /// Time (s) a still boom's rate must stay below −`stop_deg_s` for it
-    /// to be lowering: the seals slide at any speed, and a boom creeping
-    /// down under `start_deg_s` has the down-friction out of its force
-    /// (the load reads low). Counted only once the filters have run
-    /// [`CREEP_AFTER_START_S`]. Only downward: the same rule upward would
-    /// take the up-friction out of the force, and a 110 % load taken up at
-    /// rest at 80° shows 0.08 °/s upward for 0.25 s (the sensor and the
-    /// boom answering the jerk), which as a raise cut the overload 0.37 s
-    /// later. A boom creeping up under `start_deg_s` reads high by its
-    /// up-friction instead (an OVERLOAD early, at true u 0.898–0.901, in
-    /// two raises at 0.13–0.27 °/s of the campaign with `--seed 2`).
+    /// Time (s) a still boom's rate must stay beyond `stop_deg_s` one way
+    /// for it to be moving: the seals slide at any speed, and a raise at
+    /// 0.13 °/s (under `start_deg_s`) kept the up-friction in the force as
+    /// load (+6 %, OVERLOAD at true u 0.898). Counted only once the filters
+    /// have run [`CREEP_AFTER_START_S`]. Upward only while the filtered force
+    /// stays within [`CREEP_FORCE_CHANGE`] of its value when the creep
+    /// began: a 110 % load taken up at rest at 80° shows 0.08 °/s upward for
+    /// 0.25 s (the sensor and the boom answering the jerk), and taken as a
+    /// raise, with its up-friction out of the force, it was cut 0.37 s
+    /// later. Downward always (the down-friction added back errs high).
     pub creep_s: T,
 }
 
 impl<T: Real> DirectionThresholds<T> {
     /// Defaults: start at 0.15 °/s, stop below 0.05 °/s (the thesis's slowest
-    /// manoeuvre runs at about 1.3 °/s), or creeping down at over 0.05 °/s
-    /// for 0.25 s (the filtered rate's noise at rest stays under 0.03 °/s,
+    /// manoeuvre runs at about 1.3 °/s), or creeping at over 0.05 °/s for
+    /// 0.25 s (the filtered rate's noise at rest stays under 0.03 °/s,
     /// in a lift-off too).
     pub fn standard() -> Self {
         Self {
@@ -117,6 +116,12 @@ impl<T: Real> DirectionThresholds<T> {
 /// 0.09 °/s for half a second while the filter converges.
 pub const CREEP_AFTER_START_S: f64 = 1.0;
 
+/// Largest change of the filtered force over an upward creep (fraction)
+/// for it to be a raise: a creeping raise adds only its sliding friction
+/// (4–6 %), a load taken up at rest, whose jerk shows the same upward rate,
+/// far more.
+pub const CREEP_FORCE_CHANGE: f64 = 0.1;
+
 /// Direction of motion with hysteresis, remembering the last moving direction.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DirectionDetector<T> {
@@ -125,6 +130,10 @@ pub struct DirectionDetector<T> {
     last_moving: Option<Direction>,
     /// How long a still boom's rate has been below −`stop_deg_s` (s).
     creeping_s: T,
+    /// How long a still boom's rate has been above `stop_deg_s` (s), and
+    /// the filtered force when it began (N).
+    creeping_up_s: T,
+    creep_force_n: Option<T>,
     /// Time since the filters started (s), up to [`CREEP_AFTER_START_S`].
     age_s: T,
 }
@@ -137,6 +146,8 @@ impl<T: Real> DirectionDetector<T> {
             current: Direction::Still,
             last_moving: None,
             creeping_s: T::lit(0.0),
+            creeping_up_s: T::lit(0.0),
+            creep_force_n: None,
             age_s: T::lit(0.0),
         }
     }
@@ -146,11 +157,13 @@ impl<T: Real> DirectionDetector<T> {
     pub fn filters_restarted(&mut self) {
         self.age_s = T::lit(0.0);
         self.creeping_s = T::lit(0.0);
+        self.creeping_up_s = T::lit(0.0);
+        self.creep_force_n = None;
     }
 
     /// Updates with the filtered angle rate (°/s), `dt_s` after the last
     /// update, and returns the direction.
-    pub fn update(&mut self, rate_deg_s: T, dt_s: T) -> Direction {
+    pub fn update(&mut self, rate_deg_s: T, dt_s: T, force_n: T) -> Direction {
         let th = self.thresholds;
         let zero = T::lit(0.0);
         let dt = if dt_s > zero { dt_s } else { zero };
@@ -163,12 +176,23 @@ impl<T: Real> DirectionDetector<T> {
         } else {
             zero
         };
+        if counts && rate_deg_s > th.stop_deg_s {
+            self.creeping_up_s += dt;
+            if self.creep_force_n.is_none() {
+                self.creep_force_n = Some(force_n);
+            }
+        } else {
+            self.creeping_up_s = zero;
+            self.creep_force_n = None;
+        }
+        let steady = self.creep_force_n.is_some_and(|f| (force_n - f).abs() <= T::lit(CREEP_FORCE_CHANGE) * f.abs());
         self.current = match self.current {
             Direction::Up if rate_deg_s > th.stop_deg_s => Direction::Up,
             Direction::Down if rate_deg_s < -th.stop_deg_s => Direction::Down,
             _ if rate_deg_s > th.start_deg_s => Direction::Up,
             _ if rate_deg_s < -th.start_deg_s => Direction::Down,
             _ if self.creeping_s > th.creep_s => Direction::Down,
+            _ if self.creeping_up_s > th.creep_s && steady => Direction::Up,
             _ => Direction::Still,
         };
         if self.current != Direction::Still {
@@ -421,10 +445,10 @@ mod tests {
     fn direction_has_hysteresis_and_memory() {
         let mut d = DirectionDetector::new(DirectionThresholds::<f64>::standard());
         assert_eq!(d.friction(), Friction::Static { last_moving: None });
-        assert_eq!(d.update(0.1, 0.01), Direction::Still);
-        assert_eq!(d.update(0.2, 0.01), Direction::Up);
-        assert_eq!(d.update(0.1, 0.01), Direction::Up); // above stop threshold
-        assert_eq!(d.update(0.01, 0.01), Direction::Still);
+        assert_eq!(d.update(0.1, 0.01, 1e5), Direction::Still);
+        assert_eq!(d.update(0.2, 0.01, 1e5), Direction::Up);
+        assert_eq!(d.update(0.1, 0.01, 1e5), Direction::Up); // above stop threshold
+        assert_eq!(d.update(0.01, 0.01, 1e5), Direction::Still);
         // Still after raising: static friction in [0, friction_up].
         assert_eq!(
             d.friction(),
@@ -432,40 +456,46 @@ mod tests {
                 last_moving: Some(Direction::Up)
             }
         );
-        assert_eq!(d.update(-1.0, 0.01), Direction::Down);
+        assert_eq!(d.update(-1.0, 0.01, 1e5), Direction::Down);
         assert_eq!(d.friction(), Friction::Sliding(Direction::Down));
     }
 
     #[test]
-    fn a_boom_creeping_down_lowers_and_noise_and_a_creep_up_do_not() {
+    fn a_creeping_boom_moves_and_noise_and_a_load_taken_up_do_not() {
         let dt = 0.01;
         // Lowering at 0.13 °/s, under the start rate: moving once its rate
         // has stayed under the stop rate for 0.25 s, then held by the
         // hysteresis.
         let mut d = DirectionDetector::new(DirectionThresholds::<f64>::standard());
         for _ in 0..100 {
-            assert_eq!(d.update(0.0, dt), Direction::Still);
+            assert_eq!(d.update(0.0, dt, 1e5), Direction::Still);
         }
-        let started = (0..100).find(|_| d.update(-0.13, dt) != Direction::Still);
+        let started = (0..100).find(|_| d.update(-0.13, dt, 1e5) != Direction::Still);
         // The 25th or 26th update: 0.25 s of rate (sums of steps round).
         assert!(started.is_some_and(|k| (24..=25).contains(&k)), "{started:?}");
         assert_eq!(d.friction(), Friction::Sliding(Direction::Down));
-        assert_eq!((0..100).map(|_| d.update(-0.06, dt)).last(), Some(Direction::Down));
-        // The same rate upward is no raise: its friction is not taken out
-        // of the force (a load taken up shows it too).
+        assert_eq!((0..100).map(|_| d.update(-0.06, dt, 1e5)).last(), Some(Direction::Down));
+        // The same rate upward with the force rising (a load taken up at
+        // rest shows it) is no raise: its friction is not taken out.
         let mut d = DirectionDetector::new(DirectionThresholds::<f64>::standard());
-        for _ in 0..500 {
-            assert_eq!(d.update(0.13, dt), Direction::Still);
+        for k in 0..500 {
+            assert_eq!(d.update(0.13, dt, 1e5 * (1.0 + 0.01 * f64::from(k))), Direction::Still);
         }
-        // A still boom whose rate stays over −0.05 °/s never moves, nor one
-        // whose rate dips under it for less than 0.25 s at a time (at 2 Hz,
-        // 0.1 s each period), nor the filters' start-up (−0.09 °/s for half
-        // a second), after power-up or a restart.
+        // With its force steady it is a creeping raise.
+        let mut d = DirectionDetector::new(DirectionThresholds::<f64>::standard());
+        for _ in 0..100 {
+            d.update(0.0, dt, 1e5);
+        }
+        assert_eq!((0..30).map(|_| d.update(0.13, dt, 1.04e5)).last(), Some(Direction::Up));
+        // A still boom whose rate stays within ±0.05 °/s never moves, nor
+        // one whose rate leaves that band for less than 0.25 s at a time (at
+        // 2 Hz, 0.1 s each way each period), nor the filters' start-up
+        // (−0.09 °/s for half a second), after power-up or a restart.
         let mut d = DirectionDetector::new(DirectionThresholds::<f64>::standard());
         for k in 0..3000 {
             let t = f64::from(k) * dt;
             let rate = if k < 1500 { 0.045 * (0.2 * t).cos() } else { 0.09 * (4.0 * core::f64::consts::PI * t).cos() };
-            assert_eq!(d.update(rate, dt), Direction::Still, "{t}");
+            assert_eq!(d.update(rate, dt, 1e5), Direction::Still, "{t}");
         }
         for restart in [false, true] {
             if restart {
@@ -474,7 +504,7 @@ mod tests {
                 d = DirectionDetector::new(DirectionThresholds::<f64>::standard());
             }
             for _ in 0..60 {
-                assert_eq!(d.update(-0.09, dt), Direction::Still);
+                assert_eq!(d.update(-0.09, dt, 1e5), Direction::Still);
             }
         }
     }

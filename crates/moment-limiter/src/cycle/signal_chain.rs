@@ -206,7 +206,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         };
         self.previous_rate_deg_s = Some(rate_f);
         let previous_direction = self.direction.current();
-        let direction = self.direction.update(rate_f, dt_s);
+        let direction = self.direction.update(rate_f, dt_s, force_f);
         self.moving_for_s = if direction == Direction::Still {
             T::lit(0.0)
         } else if direction == previous_direction {
