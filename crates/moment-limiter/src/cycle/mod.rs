@@ -129,11 +129,12 @@ pub struct Limiter<T, M> {
     previous_rate_deg_s: Option<T>,
     moving_for_s: T,
     bank: Option<StaticLoadBank<T>>,
-    /// Time the bank has not been advanced (s): the faulted cycles since
-    /// its last update.
-    bank_idle_s: T,
-    /// Bad cycles came since the last measurement (see
-    /// [`PAUSE_GAP_S`]).
+    /// The gap in the good readings (s): the bad cycles since the last
+    /// measurement, which the signal chain bridges or restarts after.
+    gap_s: T,
+    /// Bad cycles came since the last measurement (see [`PAUSE_GAP_S`]): a
+    /// clock fault's cycle adds nothing to `gap_s`, so the gap alone cannot
+    /// tell.
     interrupted: bool,
     /// The last good sample's piston force (N) and boom angle (°, offset
     /// removed): where a short gap is bridged from.
@@ -164,7 +165,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             previous_rate_deg_s: None,
             moving_for_s: T::lit(0.0),
             bank: config.swing.map(StaticLoadBank::new),
-            bank_idle_s: T::lit(0.0),
+            gap_s: T::lit(0.0),
             interrupted: false,
             last_good: None,
             direction: DirectionDetector::new(config.direction),
@@ -322,7 +323,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         };
 
         if measurement.is_none() {
-            self.bank_idle_s += dt_s;
+            self.gap_s += dt_s;
         }
 
         // Stage 5.

@@ -104,7 +104,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         // u 0.906 and 0.873 as the fault ended).
         let mut dt_s = dt_s;
         if core::mem::replace(&mut self.interrupted, false) {
-            let gap_s = core::mem::replace(&mut self.bank_idle_s, T::lit(0.0));
+            let gap_s = core::mem::replace(&mut self.gap_s, T::lit(0.0));
             match self.last_good {
                 Some(from) if gap_s <= T::lit(PAUSE_GAP_S) => {
                     dt_s = self.fill_gap(from, (force, angle_deg), gap_s, dt_s);
