@@ -154,6 +154,19 @@ fn assert_none_missed_early_or_false(runs: &[serde_json::Value]) {
     }
 }
 
+/// #1611 of the campaign with `--seed 2`: a 3 t load lowered from 82° to
+/// 7.5° in 15.6 s on the paid-out rope swings 24° when the boom stops. Its
+/// rope's tension then varies by ±14 % twice per period, which the old
+/// small-angle observer of the paid-out rope did not model: the reading
+/// peaked at 1.08 × the load, 0.9998 of rated at true u 0.88, and the
+/// change that stopped the noise driving the swings tipped it to OVERLOAD
+/// (early). The paid-out rope is now the large-angle pendulum of the held
+/// ropes with its length's terms (`moment_limiter::held_pendulum::PaidOutRope`).
+#[test]
+fn a_paid_out_ropes_large_swing_after_a_stop_is_not_read_as_load() {
+    assert_none_missed_early_or_false(&only("2", &["1611"]));
+}
+
 /// Runs the scenarios `indices` of the 10 000-scenario campaign of `seed`
 /// alone.
 fn only(seed: &str, indices: &[&str]) -> Vec<serde_json::Value> {
@@ -173,16 +186,15 @@ fn only(seed: &str, indices: &[&str]) -> Vec<serde_json::Value> {
     v
 }
 
-/// KNOWN GAP: in the campaign with `--seed 3`, #2455 and #2967 lift 10.9 t and
-/// 10.5 t (rated 10 t) off at 80° and 85° over 2–3 s on crane 7 (seal
-/// friction, a 0.25 s angle sensor). At that angle the load's force on the
-/// cylinder is 106 kN, and the reading settles at 0.95 of the load; with the
-/// filters' and the sensor's delay OVERLOAD comes 1.0–1.26 s after the load
-/// leaves the ground, at true u 1.05 and 1.09 (missed: after 1.05). The
-/// campaigns with seeds 1 and 2 have no missed overload and none later than
-/// 1 s after a lift-off. The code before this change graded them the same.
+/// #2455 and #2967 of the campaign with `--seed 3` lift 10.9 t and 10.5 t
+/// (rated 10 t) off at 80° and 85° over 2–3 s on crane 7 (seal friction, a
+/// 0.25 s angle sensor). The rope bank's pendulums, driven by the angle
+/// sensor's noise at rest (0.035°), spread the ropes' factors, and the
+/// lowest rope read the load 3.4 % low at 85° (tan θ = 11): OVERLOAD came
+/// 1.0–1.26 s after the load left the ground, at true u 1.05 and 1.09
+/// (missed). A still boom no longer drives them
+/// (`moment_limiter::static_load::SWING_DEADBAND_RAD_S`).
 #[test]
-#[ignore = "KNOWN GAP: two lift-offs at 80-85 deg in the seed-3 campaign are cut at true u 1.05 and 1.09, 1.0-1.26 s after leaving the ground"]
 fn the_third_campaigns_steep_lift_offs_are_cut_in_time() {
     let runs = only("3", &["2455", "2967"]);
     assert_none_missed_early_or_false(&runs);

@@ -1,6 +1,8 @@
 //! A load on a held rope of constant length, as a full (large-angle)
 //! pendulum hanging from the moving boom tip: its swing and the force its
-//! rope puts on the tip ([`crate::static_load`]'s held-rope hypotheses).
+//! rope puts on the tip ([`crate::static_load`]'s held-rope hypotheses);
+//! and the same pendulum on the paid-out rope, whose length follows the
+//! tip's height ([`PaidOutRope`]).
 //!
 //! The tip C = (x_C, y_C) = L·(cos θ, sin θ) from the boom foot (rigid boom;
 //! x outward), the load at C + l·(sin φ, −cos φ) (φ from the vertical,
@@ -25,7 +27,7 @@
 
 use crane_model::Real;
 
-/// The largest swing the observer follows (rad, 60°); beyond, or on a
+/// The largest swing a pendulum follows (rad, 60°); beyond, or on a
 /// non-finite state, it restarts with the load hanging still.
 const MAX_SWING_RAD: f64 = 1.047;
 
@@ -71,6 +73,8 @@ pub struct BoomTip<T> {
     pub accel_x: T,
     /// The tip's vertical acceleration ÿ_C (m/s²).
     pub accel_y: T,
+    /// The tip's vertical velocity ẏ_C (m/s): the paid-out rope's l̇.
+    pub rate_y: T,
     /// tan θ of the boom angle.
     pub tan_angle: T,
     /// Number of sub-steps (≥ 1).
@@ -100,6 +104,7 @@ impl<T: Real> BoomTip<T> {
         Self {
             accel_x: -boom_length_m * (s * accel_rad_s2 + c * w2),
             accel_y: boom_length_m * (c * accel_rad_s2 - s * w2),
+            rate_y: boom_length_m * c * rate_rad_s,
             tan_angle: s / c,
             sub_steps: n,
             h_s: dt / T::from_count(n),
@@ -197,6 +202,85 @@ impl<T: Real, const N: usize> HeldRopes<T, N> {
             let tension = g * cp - ax * sp + ay * cp + l * *phi_dot * *phi_dot;
             *factor = tension * self.inv_gravity * (cp + tip.tan_angle * sp);
         }
+    }
+}
+
+/// The paid-out rope (thesis assumption vi): the winch keeps the load at
+/// its clearance under the rigid tip, so the hanging length is the tip's
+/// height less the clearance, l(θ) = y_A0 + L·sin θ − c, and l̇ = ẏ_C,
+/// l̈ = ÿ_C. The held rope's pendulum with the terms of the changing length:
+///
+/// l·φ̈ = −g·sin φ − ẍ_C·cos φ − ÿ_C·sin φ − 2·l̇·φ̇,
+/// T/m = g·cos φ − ẍ_C·sin φ + ÿ_C·(cos φ − 1) + l·φ̇²,
+///
+/// (hanging straight, the rope paid out cancels the tip's vertical
+/// acceleration: the load does not ride), and the same factor
+/// (T/(m·g))·(cos φ + tan θ·sin φ). Once the boom stops, the length stops
+/// too and the load swings as a pendulum of that length, whose tension
+/// varies twice per period (a small-angle observer of the load's
+/// horizontal position missed that: after a fast lowering to 7.5° a 24°
+/// swing varied the pull by ±14 %, read as load at 1.08 of it).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PaidOutRope<T> {
+    gravity_m_s2: T,
+    inv_gravity: T,
+    phi: T,
+    phi_dot: T,
+    sin_phi: T,
+    cos_phi: T,
+    factor: T,
+}
+
+impl<T: Real> PaidOutRope<T> {
+    /// The load hanging still, gravity `gravity_m_s2`.
+    pub fn new(gravity_m_s2: T) -> Self {
+        Self {
+            gravity_m_s2,
+            inv_gravity: T::lit(1.0) / gravity_m_s2,
+            phi: T::lit(0.0),
+            phi_dot: T::lit(0.0),
+            sin_phi: T::lit(0.0),
+            cos_phi: T::lit(1.0),
+            factor: T::lit(1.0),
+        }
+    }
+
+    /// tan φ now.
+    pub fn tan_swing(&self) -> T {
+        self.sin_phi / self.cos_phi
+    }
+
+    /// The factor of the rope's pull on the cylinder now.
+    pub fn factor(&self) -> T {
+        self.factor
+    }
+
+    /// Advances by the boom tip's motion over one update, the hanging
+    /// length being `length_m` (m, > 0).
+    pub fn update(&mut self, tip: &BoomTip<T>, length_m: T) {
+        let (g, h, ax, ay) = (self.gravity_m_s2, tip.h_s, tip.accel_x, tip.accel_y);
+        let inv_l = T::lit(1.0) / length_m;
+        let two_l_rate = T::lit(2.0) * tip.rate_y;
+        let mut k = 0u32;
+        while k < tip.sub_steps {
+            if k > 0 {
+                (self.sin_phi, self.cos_phi) = self.phi.sin_cos_own();
+            }
+            let (sp, cp) = (self.sin_phi, self.cos_phi);
+            let acc = -(g * sp + ax * cp + ay * sp + two_l_rate * self.phi_dot) * inv_l;
+            self.phi_dot += acc * h;
+            self.phi += self.phi_dot * h;
+            k += 1;
+        }
+        let zero = T::lit(0.0);
+        let ok = self.phi.is_finite() & self.phi_dot.is_finite() & (self.phi.abs() <= T::lit(MAX_SWING_RAD));
+        if !ok {
+            (self.phi, self.phi_dot) = (zero, zero);
+        }
+        let (sp, cp) = sin_cos_swing(self.phi);
+        (self.sin_phi, self.cos_phi) = (sp, cp);
+        let tension = g * cp - ax * sp + ay * (cp - T::lit(1.0)) + length_m * self.phi_dot * self.phi_dot;
+        self.factor = tension * self.inv_gravity * (cp + tip.tan_angle * sp);
     }
 }
 

@@ -47,8 +47,8 @@
 //!
 //! **A swinging load** pulls the tip sideways too: the piston force grows by
 //! (F_model(W) − at_zero)·tan θ·tan φ ([`crate::swing`]), so the load part of
-//! F_model is scaled by (1 + tan θ·tan φ) with tan φ from the swing observer
-//! (0 without it).
+//! F_model is scaled by (1 + tan θ·tan φ) for a swing φ (the rope bank,
+//! [`crate::static_load`], predicts it for each rope it considers).
 //!
 //! **Motion.** The model is evaluated at rest, and the motion enters as two
 //! corrections. The boom's angular acceleration θ̈ costs the cylinder

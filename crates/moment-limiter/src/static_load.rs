@@ -22,8 +22,8 @@
 //!   weight). Paid out to keep the load at its clearance (the thesis's
 //!   assumption vi): the load does not move vertically, h = 0.
 //! - **l, the hanging length**, which sets the swing: φ follows the tip's
-//!   horizontal motion x_C = L·cos θ as a pendulum of length l
-//!   ([`crate::swing`]), period 2π·√(l/g): 3.5 s at 3 m, 9 s at 20 m. Held,
+//!   motion as a pendulum of length l ([`crate::swing`],
+//!   [`crate::held_pendulum`]), period 2π·√(l/g): 3.5 s at 3 m, 9 s at 20 m. Held,
 //!   l is any constant from 3 m to the tip height; paid out, l is the tip
 //!   height less the clearance and changes with θ.
 //!
@@ -32,8 +32,9 @@
 //! [`HYPOTHESES`] hypotheses run side by side: the paid-out rope (h = 0,
 //! l(θ)), and held ropes (h = 1) of [`HELD_LENGTHS_M`] (a geometric grid from
 //! 3 m to 22.6 m, ratio 1.25: neighbouring pendulum frequencies differ by
-//! 12 %). Each has its swing observer, all driven by the same measured
-//! (lag-compensated, filtered) boom angle, and each solves the load equation
+//! 12 %). Each has its large-angle pendulum, all driven by the same measured
+//! (lag-compensated, filtered) boom motion (not by the noise of a still
+//! boom: [`SWING_DEADBAND_RAD_S`]), and each solves the load equation
 //! above for its own W_k. Every W_k sees the same force, so a real change of
 //! the load (a lift-off, a load added) moves all of them at once and at
 //! once: nothing here delays it. What separates them is the wrong factor: a
@@ -170,17 +171,31 @@
 //! none, and a load added there is followed at the averages' pace as before
 //! (`host-sim` test `a_load_added_at_rest_after_a_move_known_gap`).
 //!
-//! The cost per cycle: [`HYPOTHESES`] swing observers (one 10 ms sub-step at
+//! The cost per cycle: [`HYPOTHESES`] pendulums (one 10 ms sub-step at
 //! 100 Hz each), as many solutions of a quadratic, four filter stages and
 //! one division (the ratio ρ_k); no heap, fixed loops.
 
 use crane_model::loads::load_model::Quadratic;
 use crane_model::Real;
 
-use crate::held_pendulum::{BoomTip, HeldRopes};
+use crate::held_pendulum::{BoomTip, HeldRopes, PaidOutRope};
 use crate::filter::stage_gain;
 use crate::load_jump::{self, Consistency};
-use crate::swing::{SwingGeometry, SwingObserver, MAX_TAN_SWING};
+use crate::swing::SwingGeometry;
+
+/// Boom rate under which the ropes' pendulums are not driven (rad/s;
+/// 0.05 °/s). The pendulums are undamped, and the acceleration of a still
+/// boom is the angle sensor's noise (its filtered rate stays under
+/// 0.03 °/s at 0.035° of noise): driven by it, their swings grew like a
+/// random walk. After an hour at rest at 80° the lowest rope read 0.83 of
+/// the load, and a 110 % lift-off then read 11 % lower than at power-up
+/// (WARNING, not OVERLOAD, 1 s after it left the ground); at 85° five
+/// seconds of noise read a lift-off 3.4 % low, and it was cut 1.26 s after
+/// leaving the ground. Beyond it the pendulums get the rate less the
+/// deadband and the full acceleration (the deadband's derivative): a move
+/// loses 0.05 °/s of its start and of its stop, 2–5 % of the swing of a
+/// 1–3 °/s move.
+pub const SWING_DEADBAND_RAD_S: f64 = 0.05 * core::f64::consts::PI / 180.0;
 
 /// Hanging lengths of the held-rope hypotheses (m).
 pub const HELD_LENGTHS_M: [f64; 10] = [
@@ -204,9 +219,9 @@ pub const AGREEMENT: f64 = 0.005;
 
 /// Boom rate above which the bank counts the boom as having luffed (rad/s,
 /// 0.15 °/s: the limiter's start-of-motion threshold). Before the first
-/// luff no hypothesis has a swing of its own (what the observers show then is
-/// the angle's noise, which at 80° spreads the factors by over 1 %), so
-/// all agree.
+/// luff no hypothesis has a swing of its own (what the pendulums would show
+/// then is the angle's noise, which at 80° spread the factors by over 1 %
+/// before [`SWING_DEADBAND_RAD_S`]), so all agree.
 pub const MOVING_RAD_S: f64 = 0.15 * core::f64::consts::PI / 180.0;
 
 /// Boom rate (rad/s, 0.05 °/s: the limiter's stop threshold) above which
@@ -272,8 +287,8 @@ pub struct StaticLoadBank<T> {
     hypotheses: [Hypothesis<T>; HYPOTHESES],
     /// The held ropes' pendulums, advanced together.
     ropes: HeldRopes<T, { HELD_LENGTHS_M.len() }>,
-    /// The paid-out rope's swing observer and its tan φ now.
-    paid_out: SwingObserver<T>,
+    /// The paid-out rope's pendulum and its tan φ now.
+    paid_out: PaidOutRope<T>,
     paid_out_tan_swing: T,
     dt_s: T,
     /// The smoothing stage of W_fast; `None` until the first load.
@@ -323,7 +338,7 @@ impl<T: Real> StaticLoadBank<T> {
             geometry,
             hypotheses: core::array::from_fn(make),
             ropes: HeldRopes::new(HELD_LENGTHS_M.map(T::lit), geometry.gravity_m_s2),
-            paid_out: SwingObserver::new(geometry),
+            paid_out: PaidOutRope::new(geometry.gravity_m_s2),
             paid_out_tan_swing: T::lit(0.0),
             dt_s: T::lit(0.0),
             fast_stage: None,
@@ -354,27 +369,29 @@ impl<T: Real> StaticLoadBank<T> {
         self.follow_s = T::lit(0.0);
     }
 
-    /// Moves the paid-out rope observer's tip to `angle_rad` keeping its
-    /// swing relative to the tip (after the filters restarted at a new
-    /// reading: the jump of the filtered angle is no motion of the boom).
-    /// The held-rope pendulums are driven by the tip's acceleration, not its
-    /// position, and need nothing.
-    pub fn rebase(&mut self, angle_rad: T) {
-        self.paid_out.rebase(angle_rad);
-    }
-
     /// Forgets swing and averages (after a sensor fault broke the angle).
     pub fn reset(&mut self) {
         *self = Self::new(self.geometry);
     }
 
-    /// Advances every swing observer to the boom angle `angle_rad`, rate
+    /// Advances every rope's pendulum to the boom angle `angle_rad`, rate
     /// and acceleration (at the force's instant), `dt_s` after the previous
     /// call; returns the paid-out rope's tan φ (a diagnostic).
     pub fn advance(&mut self, angle_rad: T, rate_rad_s: T, accel_rad_s2: T, dt_s: T) -> T {
-        let tip = BoomTip::new(angle_rad.sin_cos_own(), self.geometry.boom_length_m, rate_rad_s, accel_rad_s2, dt_s);
+        // The pendulums move with the boom, not with the sensor's noise
+        // (see SWING_DEADBAND_RAD_S).
+        let r0 = T::lit(SWING_DEADBAND_RAD_S);
+        let (drive_rate, drive_accel) = if rate_rad_s > r0 {
+            (rate_rad_s - r0, accel_rad_s2)
+        } else if rate_rad_s < -r0 {
+            (rate_rad_s + r0, accel_rad_s2)
+        } else {
+            (T::lit(0.0), T::lit(0.0))
+        };
+        let tip = BoomTip::new(angle_rad.sin_cos_own(), self.geometry.boom_length_m, drive_rate, drive_accel, dt_s);
         self.ropes.update(&tip);
-        self.paid_out_tan_swing = self.paid_out.update(angle_rad, dt_s);
+        self.paid_out.update(&tip, self.geometry.paid_out_length_m(angle_rad));
+        self.paid_out_tan_swing = self.paid_out.tan_swing();
         self.dt_s = if dt_s.is_finite() && dt_s > T::lit(0.0) {
             dt_s
         } else {
@@ -406,11 +423,10 @@ impl<T: Real> StaticLoadBank<T> {
 
     /// The factor of possible hypothesis `h` at tan θ, if it can weigh (see
     /// the module doc): motion only, never the force.
-    fn factor(&self, h: &Hypothesis<T>, tan_theta: T) -> Option<T> {
-        let lim = T::lit(MAX_TAN_SWING);
+    fn factor(&self, h: &Hypothesis<T>) -> Option<T> {
         let factor = match h.held {
             Some(i) => self.ropes.factor(i)?,
-            None => T::lit(1.0) + tan_theta * self.paid_out_tan_swing.max(-lim).min(lim),
+            None => self.paid_out.factor(),
         };
         (factor.is_finite() && factor >= T::lit(MIN_LOAD_FACTOR)).then_some(factor)
     }
@@ -496,8 +512,6 @@ impl<T: Real> StaticLoadBank<T> {
     /// The load of this cycle (after [`advance`](Self::advance)); `None` when
     /// the force gives no load on the model's rising branch (not observable).
     pub fn update(&mut self, terms: &LoadTerms<T>) -> Option<StaticLoad<T>> {
-        let (sin_theta, cos_theta) = terms.angle_rad.sin_cos_own();
-        let tan_theta = sin_theta / cos_theta;
         let tip_height = self.geometry.tip_height_m(terms.angle_rad);
         // Gains 1 − e^(−dt/τ) of the slow stages, the fast ones (W_fast's
         // and each hypothesis's S_k) and the inconsistency's.
@@ -517,7 +531,7 @@ impl<T: Real> StaticLoadBank<T> {
                 continue;
             }
             *p = true;
-            *slot = self.factor(h, tan_theta);
+            *slot = self.factor(h);
             match *slot {
                 Some(f) => {
                     f_lo = Some(f_lo.map_or(f, |l: T| l.min(f)));

@@ -60,8 +60,8 @@ pub struct LimiterConfig<T> {
     /// to leave the force once the boom is still (the seals release; see
     /// [`crate::load_estimate`]).
     pub seal_release_s: T,
-    /// Crane geometry for the bank of rope hypotheses and their swing
-    /// observers ([`crate::static_load`]); `None` turns the rope and swing
+    /// Crane geometry for the bank of rope hypotheses and their
+    /// pendulums ([`crate::static_load`]); `None` turns the rope and swing
     /// corrections off (the load taken hanging straight and still).
     pub swing: Option<SwingGeometry<T>>,
     /// Safety factor and chart.
@@ -91,7 +91,7 @@ impl<T: Real> LimiterConfig<T> {
     /// of a 3.3 t load at 60°, for 0.03° on the angle; a step of load shows
     /// 90 % of its size after 0.88 s); the load read ×1.05 (J376); the angle sensor of the thesis crane's
     /// recorder (pendulum of 2 Hz, ζ = 0.7: lag 2·0.7/(2π·2) = 0.1114 s); the
-    /// swing observer with the COLES Mobile 930 geometry; no calibration.
+    /// rope bank with the COLES Mobile 930 geometry; no calibration.
     pub fn standard() -> Self {
         Self {
             conversion: SensorConversion::standard(),

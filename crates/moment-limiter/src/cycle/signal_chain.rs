@@ -238,14 +238,12 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         let tan_swing = match self.bank.as_mut() {
             Some(b) => {
                 if settling {
-                    // The filters restarted at this reading: the swing is
-                    // carried over relative to the tip (no jump of the
-                    // filtered angle kicks it), the filters' start-up
-                    // acceleration is not the boom's, and no average
-                    // starts from a reading that is none yet.
-                    if self.since_restart_s == Some(T::lit(0.0)) {
-                        b.rebase(step.angle_deg * to_rad);
-                    }
+                    // The filters restarted at this reading: the swing goes
+                    // on (the pendulums take the tip's acceleration, so
+                    // the jump of the filtered angle does not kick them),
+                    // the filters' start-up acceleration is not the
+                    // boom's, and no average starts from a reading that is
+                    // none yet.
                     b.restart_averages();
                 }
                 let accel = if settling { T::lit(0.0) } else { step.accel_deg_s2 * to_rad };
