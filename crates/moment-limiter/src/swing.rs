@@ -30,7 +30,7 @@
 //! The prediction is open loop: it knows nothing of swing caused otherwise
 //! (slewing, wind, a load lifted off the ground while swinging), and like
 //! the thesis model it is undamped, so an error persists. These limits are
-//! stated in the crate's README and belong to the certification argument:
+//! stated in `docs/limiter.md` and belong to the certification argument:
 //! the bank removes the swing the luffing motion itself causes, which is
 //! what the thesis maneuvers show.
 
