@@ -48,34 +48,34 @@ mod tests {
     use moment_limiter::tools::log_format::LogParser;
     use moment_limiter::tools::replay::Replay;
 
-    /// A moving replay: every rated sample of the limiter is
-    /// `Capacity::rating` at the boom state it rated (`Measurement::boom_now`:
-    /// its angle extrapolated to "now", and its rate), bit for bit; and the
-    /// chart's rating at rest at that angle ([`rated_at`]) is never below it
-    /// and at most 2.5 % above: luffing at about 4 °/s (the thesis's 10 s
-    /// move) the model's velocity terms take up to 1.8 % off the rating.
-    /// With the boom still the two are one number (`tests/chart_cli.rs`).
+    /// A moving replay: every rated sample of the limiter is the chart's
+    /// rating at rest ([`rated_at`]) at the angle it rated
+    /// (`Measurement::boom_now`: its filtered angle extrapolated to "now"),
+    /// bit for bit, in motion as at rest: the chart carries the dynamic
+    /// margin (SPEC §4 item 8), so the boom's rate takes nothing off it
+    /// (with the model's velocity terms it took up to 1.8 % at 4 °/s). The
+    /// log luffs at up to 4 °/s, so a rating that still took the rate would
+    /// differ. With the boom still the two are one number
+    /// (`tests/chart_cli.rs`).
     #[test]
-    fn limiter_rates_with_the_chart_function_and_motion_only_lowers_it() {
+    fn limiter_rates_with_the_chart_function_in_motion_too() {
         let log = include_str!("../../examples/logs/overload_lowering.csv");
         let model = rating_model();
         let capacity = limiter_capacity(1.5).unwrap();
         let limiter = Limiter::new(crane_load_model(), LimiterConfig::standard()).unwrap();
         let mut replay = Replay::new(limiter, true);
         let mut parser = LogParser::<f32>::new();
-        let (mut compared, mut worst) = (0, 0.0f64);
+        let (mut compared, mut fastest) = (0, 0.0f32);
         for line in log.lines() {
             let Some(record) = parser.feed_line(line).unwrap() else { continue };
             let (report, _) = replay.feed(&record);
             let (Some(m), Some(est)) = (report.measurement, report.estimate) else { continue };
-            let same = capacity.rating(&model, m.boom_now).unwrap().rated_load_kg;
-            assert_eq!(est.rated_load_kg, same, "t = {} µs", record.t_us);
-            let at_rest = rated_at(&model, &capacity, m.boom_now.angle_rad).unwrap().rated_load_kg;
-            assert!(at_rest >= est.rated_load_kg * 0.9999, "t = {} µs: at rest {at_rest} < moving {}", record.t_us, est.rated_load_kg);
-            worst = worst.max(f64::from((at_rest - est.rated_load_kg) / at_rest));
+            let chart = rated_at(&model, &capacity, m.boom_now.angle_rad).unwrap().rated_load_kg;
+            assert_eq!(est.rated_load_kg, chart, "t = {} µs, {} °/s", record.t_us, m.boom_now.rate_rad_s.to_degrees());
+            fastest = fastest.max(m.boom_now.rate_rad_s.abs().to_degrees());
             compared += 1;
         }
         assert!(compared > 500, "only {compared} rated samples");
-        assert!(worst > 0.005 && worst <= 0.025, "motion changed the rating by {:.2} %", worst * 100.0);
+        assert!(fastest > 3.0, "the log must luff (fastest {fastest:.2} °/s)");
     }
 }

@@ -86,8 +86,8 @@ fn still_log(dir: &Path, deg: f64) -> std::path::PathBuf {
 /// the same angle, to 0.1 % (angles all below the cap, where the model
 /// decides). The logs hold the boom still, so the angle the
 /// limiter rates at (its filtered reading, extrapolated by its rate) is the
-/// chart's angle exactly; while luffing the limiter also rates the boom's
-/// rate (up to 1.8 % lower at 4 °/s, see `src/rating.rs`).
+/// chart's angle exactly; while luffing it rates with the same function at
+/// its extrapolated angle (see `src/rating.rs`).
 #[test]
 fn chart_rated_equals_the_limiters_trace_rated_load() {
     let dir = tempfile::tempdir().unwrap();
