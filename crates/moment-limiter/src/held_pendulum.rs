@@ -322,6 +322,42 @@ mod tests {
     }
 
     #[test]
+    fn the_paid_out_rope_does_not_ride_with_the_tip_but_a_held_one_does() {
+        // The first instant of an upward angular acceleration from rest at
+        // 40°: the held load is lifted with the tip (1 + ÿ_C/g), the paid-out
+        // one is not (the winch pays the rope out as the tip rises).
+        let th = 40f64.to_radians();
+        let tip = BoomTip::new(th.sin_cos(), 19.5, 0.0, 0.1, 1e-6);
+        let mut held = HeldRopes::new([8.0_f64], 9.81);
+        let mut paid = PaidOutRope::new(9.81);
+        held.update(&tip);
+        paid.update(&tip, 8.0);
+        let ride = 19.5 * th.cos() * 0.1 / 9.81;
+        assert!((held.factor(0).unwrap() - (1.0 + ride)).abs() < 1e-4);
+        assert!((paid.factor() - 1.0).abs() < 1e-9, "{}", paid.factor());
+    }
+
+    #[test]
+    fn at_a_still_boom_the_paid_out_rope_swings_as_a_held_one() {
+        // Released at 25° at a still boom: the length no longer changes, so
+        // swing and pull are the held pendulum's of that length, step for step.
+        let (l, phi0) = (5.0_f64, 25f64.to_radians());
+        let mut held = HeldRopes::new([l], 9.81);
+        held.phi = [phi0];
+        (held.sin_phi, held.cos_phi) = ([phi0.sin()], [phi0.cos()]);
+        let mut paid = PaidOutRope::new(9.81);
+        paid.phi = phi0;
+        (paid.sin_phi, paid.cos_phi) = phi0.sin_cos();
+        let still = BoomTip::new(50f64.to_radians().sin_cos(), 19.5, 0.0, 0.0, 0.01);
+        for _ in 0..1000 {
+            held.update(&still);
+            paid.update(&still, l);
+            assert!((held.factor(0).unwrap() - paid.factor()).abs() < 1e-12);
+            assert!((held.tan_swing(0).unwrap() - paid.tan_swing()).abs() < 1e-12);
+        }
+    }
+
+    #[test]
     fn a_free_swing_keeps_its_period_and_pulls_twice_per_period() {
         // Released at 25° at a still boom at 0° (tan θ = 0): the factor is
         // T·cos φ/(m·g), cos²25° = 0.82 at the ends, 1 + 2(1 − cos 25°)

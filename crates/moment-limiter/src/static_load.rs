@@ -188,8 +188,9 @@ use crate::swing::SwingGeometry;
 /// boom is the angle sensor's noise (its filtered rate stays under
 /// 0.03 °/s at 0.035° of noise): driven by it, their swings grew like a
 /// random walk. After an hour at rest at 80° the lowest rope read 0.83 of
-/// the load, and a 110 % lift-off then read 11 % lower than at power-up
-/// (WARNING, not OVERLOAD, 1 s after it left the ground); at 85° five
+/// the load, and a 110 % lift-off then read 7–11 % lower than at power-up
+/// (test `long_uptime`; WARNING, not OVERLOAD, 1 s after it left the
+/// ground, in a synthesized log); at 85° five
 /// seconds of noise read a lift-off 3.4 % low, and it was cut 1.26 s after
 /// leaving the ground. Beyond it the pendulums get the rate less the
 /// deadband and the full acceleration (the deadband's derivative): a move
