@@ -112,6 +112,35 @@ impl<T: Real> BoomTip<T> {
     }
 }
 
+/// φ̈ of one rope (see the module doc and [`PaidOutRope`]): gravity `g`, the
+/// tip's motion, (sin φ, cos φ), 1/l, and l̇ (0 for a held rope) with φ̇.
+#[inline(always)]
+fn swing_accel<T: Real>(g: T, tip: &BoomTip<T>, (sp, cp): (T, T), inv_l: T, length_rate: T, phi_dot: T) -> T {
+    -(g * sp + tip.accel_x * cp + tip.accel_y * sp + T::lit(2.0) * length_rate * phi_dot) * inv_l
+}
+
+/// One rope after its sub-steps: back to hanging still beyond the largest
+/// swing followed or on a non-finite state (a select, not a branch, so the
+/// lanes of [`HeldRopes`] stay in step; `&`, not `&&`), then
+/// (sin φ, cos φ) and the factor of its pull, with T/m from the module doc
+/// less l̈ `length_accel` (0 for a held rope). Returns (φ, φ̇, sin φ, cos φ,
+/// factor).
+#[inline(always)]
+fn settle_and_pull<T: Real>(
+    (phi, phi_dot): (T, T),
+    length_m: T,
+    length_accel: T,
+    (g, inv_g): (T, T),
+    tip: &BoomTip<T>,
+) -> (T, T, T, T, T) {
+    let ok = phi.is_finite() & phi_dot.is_finite() & (phi.abs() <= T::lit(MAX_SWING_RAD));
+    let zero = T::lit(0.0);
+    let (phi, phi_dot) = if ok { (phi, phi_dot) } else { (zero, zero) };
+    let (sp, cp) = sin_cos_swing(phi);
+    let tension = g * cp - tip.accel_x * sp + tip.accel_y * cp - length_accel + length_m * phi_dot * phi_dot;
+    (phi, phi_dot, sp, cp, tension * inv_g * (cp + tip.tan_angle * sp))
+}
+
 /// The pendulums of `N` hanging lengths on one boom, stored as arrays (one
 /// per quantity) and advanced together: every step is the same arithmetic on
 /// every rope with no branch, so on the host the compiler runs four ropes at
@@ -170,7 +199,8 @@ impl<T: Real, const N: usize> HeldRopes<T, N> {
     /// Advances every rope by the boom tip's motion over one update
     /// ([`BoomTip`]).
     pub fn update(&mut self, tip: &BoomTip<T>) {
-        let (g, h, ax, ay) = (self.gravity_m_s2, tip.h_s, tip.accel_x, tip.accel_y);
+        let (g, h) = (self.gravity_m_s2, tip.h_s);
+        let zero = T::lit(0.0);
         let mut k = 0u32;
         while k < tip.sub_steps {
             // The first sub-step starts from the kept sin φ, cos φ.
@@ -182,8 +212,7 @@ impl<T: Real, const N: usize> HeldRopes<T, N> {
             let lanes = self.phi.iter_mut().zip(self.phi_dot.iter_mut());
             let trig = self.sin_phi.iter().zip(self.cos_phi.iter()).zip(self.inv_length.iter());
             for ((phi, phi_dot), ((&sp, &cp), &inv_l)) in lanes.zip(trig) {
-                let acc = -(g * sp + ax * cp + ay * sp) * inv_l;
-                *phi_dot += acc * h;
+                *phi_dot += swing_accel(g, tip, (sp, cp), inv_l, zero, *phi_dot) * h;
                 *phi += *phi_dot * h;
             }
             k += 1;
@@ -191,16 +220,7 @@ impl<T: Real, const N: usize> HeldRopes<T, N> {
         let lanes = self.phi.iter_mut().zip(self.phi_dot.iter_mut()).zip(self.length_m.iter());
         let out = self.sin_phi.iter_mut().zip(self.cos_phi.iter_mut()).zip(self.factor.iter_mut());
         for (((phi, phi_dot), &l), ((s, c), factor)) in lanes.zip(out) {
-            // Beyond the largest swing followed, or not finite: hanging
-            // still again (a select, not a branch, so the lanes stay in step).
-            // `&`, not `&&`: no branch.
-            let ok = phi.is_finite() & phi_dot.is_finite() & (phi.abs() <= T::lit(MAX_SWING_RAD));
-            let zero = T::lit(0.0);
-            (*phi, *phi_dot) = if ok { (*phi, *phi_dot) } else { (zero, zero) };
-            let (sp, cp) = sin_cos_swing(*phi);
-            (*s, *c) = (sp, cp);
-            let tension = g * cp - ax * sp + ay * cp + l * *phi_dot * *phi_dot;
-            *factor = tension * self.inv_gravity * (cp + tip.tan_angle * sp);
+            (*phi, *phi_dot, *s, *c, *factor) = settle_and_pull((*phi, *phi_dot), l, zero, (g, self.inv_gravity), tip);
         }
     }
 }
@@ -258,29 +278,21 @@ impl<T: Real> PaidOutRope<T> {
     /// Advances by the boom tip's motion over one update, the hanging
     /// length being `length_m` (m, > 0).
     pub fn update(&mut self, tip: &BoomTip<T>, length_m: T) {
-        let (g, h, ax, ay) = (self.gravity_m_s2, tip.h_s, tip.accel_x, tip.accel_y);
+        let (g, h) = (self.gravity_m_s2, tip.h_s);
         let inv_l = T::lit(1.0) / length_m;
-        let two_l_rate = T::lit(2.0) * tip.rate_y;
         let mut k = 0u32;
         while k < tip.sub_steps {
             if k > 0 {
                 (self.sin_phi, self.cos_phi) = self.phi.sin_cos_own();
             }
-            let (sp, cp) = (self.sin_phi, self.cos_phi);
-            let acc = -(g * sp + ax * cp + ay * sp + two_l_rate * self.phi_dot) * inv_l;
-            self.phi_dot += acc * h;
+            let trig = (self.sin_phi, self.cos_phi);
+            self.phi_dot += swing_accel(g, tip, trig, inv_l, tip.rate_y, self.phi_dot) * h;
             self.phi += self.phi_dot * h;
             k += 1;
         }
-        let zero = T::lit(0.0);
-        let ok = self.phi.is_finite() & self.phi_dot.is_finite() & (self.phi.abs() <= T::lit(MAX_SWING_RAD));
-        if !ok {
-            (self.phi, self.phi_dot) = (zero, zero);
-        }
-        let (sp, cp) = sin_cos_swing(self.phi);
-        (self.sin_phi, self.cos_phi) = (sp, cp);
-        let tension = g * cp - ax * sp + ay * (cp - T::lit(1.0)) + length_m * self.phi_dot * self.phi_dot;
-        self.factor = tension * self.inv_gravity * (cp + tip.tan_angle * sp);
+        // l̈ = ÿ_C: the paid-out rope cancels the tip's vertical acceleration.
+        (self.phi, self.phi_dot, self.sin_phi, self.cos_phi, self.factor) =
+            settle_and_pull((self.phi, self.phi_dot), length_m, tip.accel_y, (g, self.inv_gravity), tip);
     }
 }
 

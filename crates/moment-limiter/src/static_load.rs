@@ -288,9 +288,8 @@ pub struct StaticLoadBank<T> {
     hypotheses: [Hypothesis<T>; HYPOTHESES],
     /// The held ropes' pendulums, advanced together.
     ropes: HeldRopes<T, { HELD_LENGTHS_M.len() }>,
-    /// The paid-out rope's pendulum and its tan φ now.
+    /// The paid-out rope's pendulum.
     paid_out: PaidOutRope<T>,
-    paid_out_tan_swing: T,
     dt_s: T,
     /// The smoothing stage of W_fast; `None` until the first load.
     fast_stage: Option<T>,
@@ -340,7 +339,6 @@ impl<T: Real> StaticLoadBank<T> {
             hypotheses: core::array::from_fn(make),
             ropes: HeldRopes::new(HELD_LENGTHS_M.map(T::lit), geometry.gravity_m_s2),
             paid_out: PaidOutRope::new(geometry.gravity_m_s2),
-            paid_out_tan_swing: T::lit(0.0),
             dt_s: T::lit(0.0),
             fast_stage: None,
             moved: false,
@@ -392,7 +390,6 @@ impl<T: Real> StaticLoadBank<T> {
         let tip = BoomTip::new(angle_rad.sin_cos_own(), self.geometry.boom_length_m, drive_rate, drive_accel, dt_s);
         self.ropes.update(&tip);
         self.paid_out.update(&tip, self.geometry.paid_out_length_m(angle_rad));
-        self.paid_out_tan_swing = self.paid_out.tan_swing();
         self.dt_s = if dt_s.is_finite() && dt_s > T::lit(0.0) {
             dt_s
         } else {
@@ -419,11 +416,11 @@ impl<T: Real> StaticLoadBank<T> {
             self.after_move = false;
         }
         self.still = still;
-        self.paid_out_tan_swing
+        self.paid_out.tan_swing()
     }
 
-    /// The factor of possible hypothesis `h` at tan θ, if it can weigh (see
-    /// the module doc): motion only, never the force.
+    /// The factor of possible hypothesis `h`, if it can weigh (see the
+    /// module doc): motion only, never the force.
     fn factor(&self, h: &Hypothesis<T>) -> Option<T> {
         let factor = match h.held {
             Some(i) => self.ropes.factor(i)?,

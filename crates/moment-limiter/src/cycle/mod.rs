@@ -84,7 +84,7 @@ pub const PAUSE_GAP_S: f64 = 1.0;
 /// of a raise) a 3 m held rope read 1.10 × its load as the fault ended
 /// (campaign seed 3, #6036), with 25 it reads 1.06 ×. The cycle after the
 /// gap pays for it once: after the 0.24 s gap of campaign #4528 it costs
-/// the controller 39 600 instructions (0.24 ms at 168 MHz; 19 700 taking
+/// the controller 38 900 instructions (0.23 ms at 168 MHz; 19 700 taking
 /// the gap as one step).
 pub const MAX_GAP_STEPS: usize = 25;
 
