@@ -99,8 +99,14 @@ pub struct Frame<T> {
 /// The signals after conversion and filtering.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Measurement<T> {
-    /// Filtered piston force (N), transducer offsets removed.
+    /// Filtered piston force (N), transducer offsets removed, through the
+    /// angle sensor's lag too: the force of the filtered angle's instant.
     pub piston_force_n: T,
+    /// The same force through the filter only, without the sensor's lag
+    /// (N): the force of a still boom, read that much sooner
+    /// ([`crate::static_load`], "A still boom: the force without the
+    /// sensor's lag").
+    pub force_still_n: T,
     /// Boom angle now (degrees): the filtered reading, pendulum offset
     /// removed, advanced by rate × (sensor lag + filter delay).
     pub boom_angle_deg: T,

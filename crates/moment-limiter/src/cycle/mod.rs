@@ -121,6 +121,9 @@ pub struct Limiter<T, M> {
     /// The angle sensor's lag, put on the force too (see "Time alignment").
     force_lag: Option<LowPass<T>>,
     force_filter: LowPass<T>,
+    /// The same filter on the force without the sensor's lag: the force of
+    /// a still boom (see [`crate::static_load`]).
+    force_still_filter: LowPass<T>,
     angle_filter: LowPass<T>,
     static_friction_share: T,
     /// Time since the signal chain restarted (s), while under [`SETTLE_S`].
@@ -158,6 +161,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
                 LowPass::new(T::lit(1.0) / (T::two_pi() * config.effective_angle_sensor_lag_s()), 1)
             }),
             force_filter: LowPass::new(config.filter_hz, config.filter_stages),
+            force_still_filter: LowPass::new(config.filter_hz, config.filter_stages),
             static_friction_share: T::lit(1.0),
             since_restart_s: None,
             angle_filter: LowPass::new(config.filter_hz, config.filter_stages),
@@ -403,6 +407,18 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             m.static_friction_share,
         )
         .map_err(Fault::Estimate)?;
+        // The force without the sensor's lag, for a still boom (the model's
+        // terms of the filtered angle: the boom is still).
+        let force_still_n = load_equation(
+            &load_terms,
+            m.accel_rad_s2(),
+            m.force_still_n,
+            &self.config.calibration,
+            m.friction,
+            m.static_friction_share,
+        )
+        .ok()
+        .map(|(_, f)| f);
         // The static hook mass: the rope-hypothesis bank when the swing
         // geometry is known, else the load hanging straight and still.
         let static_load = match self.bank.as_mut() {
@@ -410,6 +426,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
                 bank.update(&BankTerms {
                     at_rest,
                     force_n,
+                    force_still_n,
                     angle_rad: m.boom.angle_rad,
                 })
                 .ok_or(Fault::Estimate(EstimateError::NotObservable))?,

@@ -74,6 +74,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             l.reset();
         }
         self.force_filter.reset();
+        self.force_still_filter.reset();
         self.angle_filter.reset();
         self.direction.filters_restarted();
         self.previous_angle_deg = None;
@@ -132,6 +133,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         let to_rad = T::pi() / T::lit(180.0);
         Measurement {
             piston_force_n: step.force_n,
+            force_still_n: step.force_still_n,
             boom_angle_deg: now,
             rate_deg_s: rate_f,
             accel_deg_s2: accel_f,
@@ -184,6 +186,8 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     /// after the previous: the sensor lag on the force, the filters, rate,
     /// acceleration, direction and the seals' release.
     fn filter_step(&mut self, force: T, angle_deg: T, dt_s: T) -> ChainStep<T> {
+        // Without the sensor's lag for a still boom (see crate::static_load).
+        let force_still_f = self.force_still_filter.update(force, dt_s);
         // The force through the angle sensor's lag too: force, angle, rate
         // and acceleration then share one delay (see "Time alignment").
         let force = match self.force_lag.as_mut() {
@@ -222,6 +226,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         };
         ChainStep {
             force_n: force_f,
+            force_still_n: force_still_f,
             angle_deg: angle_f,
             rate_deg_s: rate_f,
             accel_deg_s2: accel_f,
@@ -259,8 +264,10 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
 /// [`Limiter::advance_bank`]).
 #[derive(Debug, Clone, Copy)]
 struct ChainStep<T> {
-    /// Filtered piston force (N).
+    /// Filtered piston force (N), through the sensor's lag.
     force_n: T,
+    /// Filtered piston force (N), without the sensor's lag.
+    force_still_n: T,
     /// Filtered boom angle (°).
     angle_deg: T,
     /// Its rate (°/s) and acceleration (°/s²).
