@@ -449,6 +449,22 @@ fn lift_off_f32() {
     lift_off(Precision::F32);
 }
 
+/// The log of a session after [`HOLD_BEFORE_S`] at rest: a 10 s cycloidal
+/// move `from` → `to` with `w0` kg on `rope`, `at_rest_s` at rest, the hook
+/// load taken up to `w1` kg over `take_up_s`, then `after_s` at rest.
+#[allow(clippy::too_many_arguments)]
+fn lift_after_a_move(from: f64, to: f64, rope: Rope, seals: Seals, w0: f64, at_rest_s: f64, take_up_s: f64, w1: f64, after_s: f64) -> Vec<SynthRow> {
+    let mut p = Program::new(from, w0, rope_choice(rope, from.min(to))).unwrap();
+    p.push(Segment::Hold { duration_s: HOLD_BEFORE_S }).unwrap();
+    p.push(Segment::Luff { to_deg: to, shape: RampShape::Cycloidal, t1_s: 1.0, t2_s: 9.0, t3_s: 10.0 }).unwrap();
+    p.push(Segment::Hold { duration_s: at_rest_s }).unwrap();
+    p.push(Segment::LiftOff { duration_s: take_up_s, load_kg: w1 }).unwrap();
+    p.push(Segment::Hold { duration_s: after_s }).unwrap();
+    let (options, dt) = options_for_rate(RATE_HZ);
+    let samples = simulate_program(model(), &p, &options).expect("simulation");
+    synthesize(&samples, dt, 0.0, w0, &sensors(seals, 13))
+}
+
 /// Lift-off taken up fast on a slow angle sensor: at 20°, 50° and 80°, on a
 /// sensor that lags by 0.3 s (a first-order lag, learned by the
 /// calibration), the hoist takes 90 % or 110 % of the rated load up in 1 s
@@ -518,15 +534,7 @@ fn load_added_at_rest_after_a_move(precision: Precision, cases: &[(f64, f64, Rop
                 for (frac, must) in [(0.9, false), (1.1, true)] {
                     let w1 = frac * rated_kg(to.to_radians());
                     let name = format!("{from:.0}->{to:.0} 10s {rope:?} {seals:?}: {w0:.0} kg, +{:.0} kg at rest", w1 - w0);
-                    let mut p = Program::new(from, w0, rope_choice(rope, from.min(to))).unwrap();
-                    p.push(Segment::Hold { duration_s: HOLD_BEFORE_S }).unwrap();
-                    p.push(Segment::Luff { to_deg: to, shape: RampShape::Cycloidal, t1_s: 1.0, t2_s: 9.0, t3_s: 10.0 }).unwrap();
-                    p.push(Segment::Hold { duration_s: AT_REST_S }).unwrap();
-                    p.push(Segment::LiftOff { duration_s: TAKE_UP_S, load_kg: w1 }).unwrap();
-                    p.push(Segment::Hold { duration_s: 4.0 }).unwrap();
-                    let (options, dt) = options_for_rate(RATE_HZ);
-                    let samples = simulate_program(model(), &p, &options).expect("simulation");
-                    let rows = synthesize(&samples, dt, 0.0, w0, &sensors(seals, 13));
+                    let rows = lift_after_a_move(from, to, rope, seals, w0, AT_REST_S, TAKE_UP_S, w1, 4.0);
                     let pts = replay_rows(&rows, seals, precision);
                     let lifted = HOLD_BEFORE_S + 10.0 + AT_REST_S + TAKE_UP_S;
                     // Seen: the estimate at 1/1.1 of the true load, where a
@@ -556,6 +564,81 @@ fn load_added_at_rest_after_a_move(precision: Precision, cases: &[(f64, f64, Rop
     }
     println!("{precision:?}: {} failures of {}; slowest estimate to reach 1/1.1 of the true load {worst_seen:.2} s after the take-up", failures.len(), 4 * cases.len());
     assert!(failures.is_empty(), "{failures:#?}");
+}
+
+/// A load lifted after a move with the hook empty (a 10 s cycloidal move,
+/// 3 s at rest, then 110 % or 90 % of the rated load taken up over 2 s):
+/// the load swings on as the empty hook did, and the rope bank's averages,
+/// which weighed the empty hook, start from nothing. 3–6 s after the load
+/// leaves the ground the estimate (×1.05) is at least 1/1.1 of the true
+/// load, where a 110 % load reads as an OVERLOAD, and 90 % is never an
+/// OVERLOAD. Before the averages were kept no lower than W_fast at rest
+/// after a light move (`moment_limiter::static_load`), the estimate read
+/// 0.38–0.81 of the load 5 s after (the thesis rope 20° → 70° and
+/// 40° → 56°). How soon the 110 % load is cut is printed, not asserted
+/// (1.0–2.0 s here): the bank's minimum over the ropes reads the load low
+/// while their swings spread (see the module doc).
+fn load_lifted_after_an_empty_hook_move(precision: Precision, cases: &[(f64, f64, Rope)]) {
+    const TAKE_UP_S: f64 = 2.0;
+    const AT_REST_S: f64 = 3.0;
+    let mut failures = Vec::new();
+    for &(from, to, rope) in cases {
+        for seals in [Seals::Constant, Seals::Seal] {
+            for frac in [0.9, 1.1] {
+                let w = frac * rated_kg(to.to_radians());
+                let name = format!("{from:.0}->{to:.0} 10s {rope:?} {seals:?}: empty, then {w:.0} kg lifted at rest");
+                let rows = lift_after_a_move(from, to, rope, seals, 0.0, AT_REST_S, TAKE_UP_S, w, 7.0);
+                let pts = replay_rows(&rows, seals, precision);
+                let lifted = HOLD_BEFORE_S + 10.0 + AT_REST_S + TAKE_UP_S;
+                let low = pts.iter().filter(|q| q.t >= lifted + 3.0 && q.t <= lifted + 6.0).map(|q| q.ratio).fold(f64::INFINITY, f64::min);
+                let first = first_overload(&pts);
+                println!(
+                    "{name:<66} lowest estimate/true 3-6 s after {low:.3}, OVERLOAD {}",
+                    first.map_or("none".into(), |f| format!("at {:+.2} s, true u {:.3}", f.0 - lifted, f.1))
+                );
+                if frac < 1.0 && first.is_some() {
+                    failures.push(format!("{name}: OVERLOAD at 90 %"));
+                }
+                if frac > 1.0 && (!low.is_finite() || low < 1.0 / 1.1) {
+                    failures.push(format!("{name}: estimate {low:.3} of the true load 3-6 s after"));
+                }
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
+/// The moves and ropes of [`load_lifted_after_an_empty_hook_move`].
+const LIFTED_AFTER_EMPTY: [(f64, f64, Rope); 6] = [
+    (40.0, 56.0, Rope::Thesis),
+    (20.0, 70.0, Rope::Thesis),
+    (60.0, 30.0, Rope::Thesis),
+    (40.0, 56.0, Rope::Held(0.0)),
+    (60.0, 30.0, Rope::Held(0.0)),
+    (40.0, 56.0, Rope::Held(0.5)),
+];
+
+#[test]
+fn a_load_lifted_after_an_empty_hook_move_f64() {
+    load_lifted_after_an_empty_hook_move(Precision::F64, &LIFTED_AFTER_EMPTY);
+}
+
+#[test]
+fn a_load_lifted_after_an_empty_hook_move_f32() {
+    load_lifted_after_an_empty_hook_move(Precision::F32, &LIFTED_AFTER_EMPTY);
+}
+
+/// KNOWN GAP, measured (f64), 20° → 70° (tan θ = 2.75, the empty hook
+/// swings hard): on a 3 m rope 110 % reads 0.900 of the load 3–6 s after
+/// it left the ground (cut at +0.64 s, then WARNING); on a 6 m rope
+/// (between the bank's 5.9 m and 7.3 m) 90 % is an OVERLOAD 3.44 s after,
+/// as before the averages were raised: at the swing's crest every rope of
+/// the bank reads the load 7 % high, and W_fast, the lowest of them, is
+/// then 1.07 × the load.
+#[test]
+#[ignore = "KNOWN GAP: a load lifted after an empty-hook move at 70 deg: 3 m rope reads 0.90 of 110 %, 6 m rope cuts 90 % (every rope reads 7 % high at the swing's crest)"]
+fn a_load_lifted_after_an_empty_hook_move_known_gap() {
+    load_lifted_after_an_empty_hook_move(Precision::F64, &[(20.0, 70.0, Rope::Held(0.0)), (20.0, 70.0, Rope::Held(0.5))]);
 }
 
 /// The moves and ropes where the bank sees a load added at rest within 1 s
