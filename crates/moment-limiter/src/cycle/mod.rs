@@ -108,8 +108,10 @@ type Readings<T> = (PressureBar<T>, PressureBar<T>, BoomAngle<T>);
 /// (the boom's J·θ̈ and a held load riding up with the tip) then came 0.11 s
 /// late: +13 % on a 90 % load in a 0.5 s start ramp. So the force goes
 /// through a first-order lag of the sensor's lag too, and force, angle, rate
-/// and acceleration all stand for t − lag − d (0.11 s more delay on a
-/// lift-off). The rated load takes the angle advanced by ω × (sensor lag +
+/// and acceleration all stand for t − lag − d. A still boom needs no such
+/// alignment, and the rope bank reads its load from the force without the
+/// lag too ([`crate::static_load`], "A still boom"), so the lag does not
+/// delay a lift-off. The rated load takes the angle advanced by ω × (sensor lag +
 /// d) (the present instant: lowering, the rated load falls, and it must not
 /// be read late). The same filter on force and angle keeps both delays equal
 /// whatever the cut-off.
