@@ -576,7 +576,7 @@ fn load_added_at_rest_after_a_move(precision: Precision, cases: &[(f64, f64, Rop
 /// after a light move (`moment_limiter::static_load`), the estimate read
 /// 0.38–0.81 of the load 5 s after (the thesis rope 20° → 70° and
 /// 40° → 56°). How soon the 110 % load is cut is printed, not asserted
-/// (1.0–2.0 s here): the bank's minimum over the ropes reads the load low
+/// (0.56–2.34 s here): the bank's minimum over the ropes reads the load low
 /// while their swings spread (see the module doc).
 fn load_lifted_after_an_empty_hook_move(precision: Precision, cases: &[(f64, f64, Rope)]) {
     const TAKE_UP_S: f64 = 2.0;
@@ -629,9 +629,9 @@ fn a_load_lifted_after_an_empty_hook_move_f32() {
 }
 
 /// KNOWN GAP, measured (f64), 20° → 70° (tan θ = 2.75, the empty hook
-/// swings hard): on a 3 m rope 110 % reads 0.900 of the load 3–6 s after
-/// it left the ground (cut at +0.64 s, then WARNING); on a 6 m rope
-/// (between the bank's 5.9 m and 7.3 m) 90 % is an OVERLOAD 3.44 s after,
+/// swings hard): on a 3 m rope 110 % reads 0.90 of the load 3–6 s after
+/// it left the ground (cut at +0.55 s, then WARNING); on a 6 m rope
+/// (between the bank's 5.9 m and 7.3 m) 90 % is an OVERLOAD 3.37 s after,
 /// as before the averages were raised: at the swing's crest every rope of
 /// the bank reads the load 7 % high, and W_fast, the lowest of them, is
 /// then 1.07 × the load.
@@ -671,6 +671,24 @@ fn a_load_added_at_rest_after_a_move_f64() {
 #[test]
 fn a_load_added_at_rest_after_a_move_f32() {
     load_added_at_rest_after_a_move(Precision::F32, &ADDED_SEEN);
+}
+
+/// The same on an angle sensor that lags 0.3 s (a first-order lag, learned
+/// by the calibration), f64: at rest after a move the bank reads the force
+/// without the lag, its pendulums' swings with the lag undone
+/// (`moment_limiter::static_load`, "At rest after a move: the force without
+/// the lag"). Through the lag, 110 % was cut 1.18–1.24 s after the take-up
+/// (`crane-sim synth` of 40° → 60°, held ropes of 8.9 and 14.8 m, crane 10
+/// of the campaign). Behind this sensor the 5.95 m rope stopped at 60° has
+/// no consistent rope in the bank (see the known gap below): the load is
+/// seen after 3.8–3.9 s, or 0.85 s with one noise draw of three (4.0 s
+/// through the lag).
+#[test]
+fn a_load_added_at_rest_after_a_move_on_a_slow_sensor() {
+    let cases: Vec<_> = ADDED_SEEN.iter().copied().filter(|&c| c != (40.0, 60.0, Rope::Held(0.25))).collect();
+    SENSOR_LAG_S.with(|l| l.set(Some(0.3)));
+    load_added_at_rest_after_a_move(Precision::F64, &cases);
+    SENSOR_LAG_S.with(|l| l.set(None));
 }
 
 /// KNOWN GAP, measured (f64): a 3 m rope stopped at 60° or 80° and the

@@ -70,7 +70,8 @@
 //! filter's and the fast stages' response: a 3 t → 4 t step on the bank's
 //! own ropes reads ≥ 97.5 % in 0.52–0.71 s; in the simulator (`host-sim` test
 //! `a_load_added_at_rest_after_a_move_*`) 1/1.1 of a load taken up over
-//! 0.5 s is read within 0.93 s of the take-up's end.
+//! 0.5 s is read within 0.81 s of the take-up's end (0.93 s when the bank
+//! read the force through the sensor's lag at rest).
 //!
 //! It only ever multiplies by ρ > 1 and raises the held weighing: it raises
 //! the reading and lowers nothing, so it delays no overload. A load set

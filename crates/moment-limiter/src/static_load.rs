@@ -180,8 +180,28 @@
 //! after leaving the ground for T = 2 s, 0.74–0.80 s for 1 s, 0.91–0.96 s
 //! for 0.5 s, 1.02–1.07 s for 0.3 s (a snatch; 0.15 s takes p1 past its
 //! range, a FAULT, at 20°). Before, on the 0.3 s sensor: 0.88–0.92 s,
-//! 1.16–1.20 s, 1.33–1.38 s and 1.37–1.46 s. After a move the ropes' swings
-//! disagree and the lag stays (a load added then: below).
+//! 1.16–1.20 s, 1.33–1.38 s and 1.37–1.46 s.
+//!
+//! ## At rest after a move: the force without the lag
+//!
+//! After a move the ropes' swings disagree, but the boom is just as still,
+//! and the lag only delays what the force shows. The pendulums are driven
+//! by the lagged angle, and a pendulum is linear in its drive: each swings
+//! as the true one would, seen through the sensor's first-order lag τ (at
+//! the swing's ω, amplitude 1/√(1 + ω²τ²) and phase −atan(ωτ): 0.93 and
+//! 21° for a 6 m rope behind a 0.3 s sensor). (1 + τ·d/dt) undoes that:
+//! with the tip still, φ + τ·φ̇ and φ̇ − τ·(g/l)·sin φ
+//! ([`crate::held_pendulum`]). So at rest after a move, once the pendulums
+//! are no longer driven (the rate within [`SWING_DEADBAND_RAD_S`]), every
+//! hypothesis solves the force without the lag with the factor of its swing
+//! so led, and W_fast, the averages, the hold and the load-added rescale
+//! below go on as before with those W_k. A load added at rest (40° → 60°,
+//! held ropes of 5.95–14.8 m, 110 % taken up in 0.5 s, crane 10 of the
+//! campaign) was cut 1.18–1.24 s after its take-up behind a 0.3 s sensor
+//! and 0.93–0.98 s behind the 0.111 s default; now 0.84–0.88 s and
+//! 0.81–0.86 s. (Turning each swing forward by ωτ instead restored the
+//! phase only: the ropes read 7 % too little swing, and the 5.95 m rope
+//! lost its consistency.)
 //!
 //! ## At rest after a move: a load added, seen at once
 //!
@@ -224,7 +244,9 @@
 //!
 //! The cost per cycle: [`HYPOTHESES`] pendulums (one 10 ms sub-step at
 //! 100 Hz each), as many solutions of a quadratic, four filter stages and
-//! one division (the ratio ρ_k); no heap, fixed loops.
+//! one division (the ratio ρ_k); at rest after a move as many factors of
+//! the led swings (a sine and cosine polynomial each); no heap, fixed
+//! loops.
 
 use crane_model::loads::load_model::Quadratic;
 use crane_model::Real;
@@ -323,6 +345,14 @@ pub struct LoadTerms<T> {
     pub angle_rad: T,
 }
 
+/// Every rope's factor with the sensor's lag undone
+/// ([`StaticLoadBank::led_factors`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct LedFactors<T> {
+    held: [T; HELD_LENGTHS_M.len()],
+    paid_out: T,
+}
+
 /// One hypothesis: which rope, and its slow average.
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct Hypothesis<T> {
@@ -375,6 +405,12 @@ pub struct StaticLoadBank<T> {
     /// The move that ended carried (nearly) no load: its last weighing was
     /// under [`load_jump::MIN_AVERAGE_KG`] (see the module doc).
     light_at_stop: bool,
+    /// The angle sensor's lag (s), by which the force without it leads the
+    /// pendulums (see the module doc).
+    lead_s: T,
+    /// The pendulums were not driven at the last advance (see
+    /// [`SWING_DEADBAND_RAD_S`]).
+    undriven: bool,
 }
 
 /// The bank's answer of one cycle.
@@ -414,7 +450,18 @@ impl<T: Real> StaticLoadBank<T> {
             follow_s: T::lit(0.0),
             after_move: false,
             light_at_stop: false,
+            lead_s: T::lit(0.0),
+            undriven: true,
         }
+    }
+
+    /// The same bank that, at rest after a move, reads the force without the
+    /// angle sensor's lag `lead_s` (s) against its pendulums' swings with the
+    /// lag undone (see the module doc).
+    pub fn with_lead_s(mut self, lead_s: T) -> Self {
+        let lead_s = if lead_s.is_finite() && lead_s > T::lit(0.0) { lead_s } else { T::lit(0.0) };
+        self.lead_s = lead_s;
+        self
     }
 
     /// Forgets the averages, keeps the swing (after a fault interrupted the
@@ -434,7 +481,7 @@ impl<T: Real> StaticLoadBank<T> {
 
     /// Forgets swing and averages (after a sensor fault broke the angle).
     pub fn reset(&mut self) {
-        *self = Self::new(self.geometry);
+        *self = Self::new(self.geometry).with_lead_s(self.lead_s);
     }
 
     /// Advances every rope's pendulum to the boom angle `angle_rad`, rate
@@ -451,6 +498,7 @@ impl<T: Real> StaticLoadBank<T> {
         } else {
             (T::lit(0.0), T::lit(0.0))
         };
+        self.undriven = rate_rad_s.abs() <= r0;
         let tip = BoomTip::new(angle_rad.sin_cos_own(), self.geometry.boom_length_m, drive_rate, drive_accel, dt_s);
         self.ropes.update(&tip);
         self.paid_out.update(&tip, self.geometry.paid_out_length_m(angle_rad));
@@ -487,12 +535,25 @@ impl<T: Real> StaticLoadBank<T> {
 
     /// The factor of possible hypothesis `h`, if it can weigh (see the
     /// module doc): motion only, never the force.
-    fn factor(&self, h: &Hypothesis<T>) -> Option<T> {
-        let factor = match h.held {
-            Some(i) => self.ropes.factor(i)?,
-            None => self.paid_out.factor(),
+    fn factor(&self, h: &Hypothesis<T>, led: Option<&LedFactors<T>>) -> Option<T> {
+        let factor = match (h.held, led) {
+            (Some(i), None) => self.ropes.factor(i)?,
+            (None, None) => self.paid_out.factor(),
+            (Some(i), Some(l)) => *l.held.get(i)?,
+            (None, Some(l)) => l.paid_out,
         };
         (factor.is_finite() && factor >= T::lit(MIN_LOAD_FACTOR)).then_some(factor)
+    }
+
+    /// Every rope's factor with [`Self::with_lead_s`]'s lag undone, the boom
+    /// still at `angle_rad`.
+    fn led_factors(&self, angle_rad: T) -> LedFactors<T> {
+        let (s, c) = angle_rad.sin_cos_own();
+        let tan_angle = s / c;
+        LedFactors {
+            held: self.ropes.led_factors(self.lead_s, tan_angle),
+            paid_out: self.paid_out.led_factor(self.geometry.paid_out_length_m(angle_rad), self.lead_s, tan_angle),
+        }
     }
 
     /// Whether hypothesis `h` is possible at all with the tip `tip_height_m`
@@ -587,6 +648,16 @@ impl<T: Real> StaticLoadBank<T> {
         let settle = stage_gain(self.dt_s / T::lit(load_jump::CONSISTENCY_TAU_S));
         // The factors first: which hypotheses weigh, and how far apart they
         // are (motion only).
+        // At rest after a move, the force without the sensor's lag and the
+        // pendulums' swings with the lag undone (see the module doc).
+        let led = match terms.force_still_n {
+            Some(f) if self.moved && self.still && self.undriven && self.lead_s > T::lit(0.0) => Some((f, self.led_factors(terms.angle_rad))),
+            _ => None,
+        };
+        let (force, led) = match led {
+            Some((f, l)) => (f, Some(l)),
+            None => (terms.force_n, None),
+        };
         let mut factors = [None; HYPOTHESES];
         let (mut f_lo, mut f_hi): (Option<T>, Option<T>) = (None, None);
         // Every possible rope (one whose load would be above ground) weighs:
@@ -598,7 +669,7 @@ impl<T: Real> StaticLoadBank<T> {
                 continue;
             }
             *p = true;
-            *slot = self.factor(h);
+            *slot = self.factor(h, led.as_ref());
             match *slot {
                 Some(f) => {
                     f_lo = Some(f_lo.map_or(f, |l: T| l.min(f)));
@@ -635,7 +706,7 @@ impl<T: Real> StaticLoadBank<T> {
                 }
                 continue;
             };
-            let w = terms.at_rest.scale_load_part(f).solve(terms.force_n)?;
+            let w = terms.at_rest.scale_load_part(f).solve(force)?;
             fast = Some(fast.map_or(w, |m: T| m.min(w)));
             // A hypothesis that starts weighing (or starts again) starts no
             // lower than the bank's weighing of the last cycle: a rope that
@@ -671,7 +742,7 @@ impl<T: Real> StaticLoadBank<T> {
         let fast = match fast {
             Some(f) => f,
             // No hypothesis can weigh: the load hanging straight and still.
-            None => terms.at_rest.solve(terms.force_n)?,
+            None => terms.at_rest.solve(force)?,
         };
         // One stage against the bounce.
         let fast = match self.fast_stage {

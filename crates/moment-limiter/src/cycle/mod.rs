@@ -170,7 +170,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             previous_angle_deg: None,
             previous_rate_deg_s: None,
             moving_for_s: T::lit(0.0),
-            bank: config.swing.map(StaticLoadBank::new),
+            bank: config.swing.map(|g| StaticLoadBank::new(g).with_lead_s(config.effective_angle_sensor_lag_s())),
             gap_s: T::lit(0.0),
             interrupted: false,
             last_good: None,
