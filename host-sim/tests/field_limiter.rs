@@ -465,8 +465,9 @@ fn lift_after_a_move(from: f64, to: f64, rope: Rope, seals: Seals, w0: f64, at_r
     synthesize(&samples, dt, 0.0, w0, &sensors(seals, 13))
 }
 
-/// Lift-off taken up fast on a slow angle sensor: at 20°, 50° and 80°, on a
-/// sensor that lags by 0.3 s (a first-order lag, learned by the
+/// Lift-off taken up fast on a slow angle sensor (run it
+/// [`behind_a_lagging_sensor`]): at 20°, 50° and 80°, on a sensor that lags
+/// by 0.3 s (a first-order lag, learned by the
 /// calibration), the hoist takes 90 % or 110 % of the rated load up in 1 s
 /// or 0.5 s: at 110 % OVERLOAD within 1 s of the load leaving the ground;
 /// at 90 % no OVERLOAD. The force of a still boom is read without the
@@ -474,7 +475,6 @@ fn lift_after_a_move(from: f64, to: f64, rope: Rope, seals: Seals, w0: f64, at_r
 /// the lag, 110 % taken up in 1 s was cut 1.16–1.20 s after it left the
 /// ground, and in 0.5 s 1.33–1.38 s.
 fn lift_off_fast_on_a_slow_sensor(precision: Precision) {
-    SENSOR_LAG_S.with(|l| l.set(Some(0.3)));
     let mut failures = Vec::new();
     for angle in [20.0f64, 50.0, 80.0] {
         let rated = rated_kg(angle.to_radians());
@@ -496,18 +496,25 @@ fn lift_off_fast_on_a_slow_sensor(precision: Precision) {
             }
         }
     }
-    SENSOR_LAG_S.with(|l| l.set(None));
     assert!(failures.is_empty(), "{failures:#?}");
+}
+
+/// Runs `f` on this thread with the angle sensor a first-order lag of
+/// `tau_s` (see [`SENSOR_LAG_S`]), then the standard sensor again.
+fn behind_a_lagging_sensor(tau_s: f64, f: impl FnOnce()) {
+    SENSOR_LAG_S.with(|l| l.set(Some(tau_s)));
+    f();
+    SENSOR_LAG_S.with(|l| l.set(None));
 }
 
 #[test]
 fn lift_off_fast_on_a_slow_sensor_f64() {
-    lift_off_fast_on_a_slow_sensor(Precision::F64);
+    behind_a_lagging_sensor(0.3, || lift_off_fast_on_a_slow_sensor(Precision::F64));
 }
 
 #[test]
 fn lift_off_fast_on_a_slow_sensor_f32() {
-    lift_off_fast_on_a_slow_sensor(Precision::F32);
+    behind_a_lagging_sensor(0.3, || lift_off_fast_on_a_slow_sensor(Precision::F32));
 }
 
 /// A load added at rest while the load still swings from a move (the
@@ -686,9 +693,7 @@ fn a_load_added_at_rest_after_a_move_f32() {
 #[test]
 fn a_load_added_at_rest_after_a_move_on_a_slow_sensor() {
     let cases: Vec<_> = ADDED_SEEN.iter().copied().filter(|&c| c != (40.0, 60.0, Rope::Held(0.25))).collect();
-    SENSOR_LAG_S.with(|l| l.set(Some(0.3)));
-    load_added_at_rest_after_a_move(Precision::F64, &cases);
-    SENSOR_LAG_S.with(|l| l.set(None));
+    behind_a_lagging_sensor(0.3, || load_added_at_rest_after_a_move(Precision::F64, &cases));
 }
 
 /// KNOWN GAP, measured (f64): a 3 m rope stopped at 60° or 80° and the

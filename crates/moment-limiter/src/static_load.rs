@@ -191,8 +191,9 @@
 //! the swing's ω, amplitude 1/√(1 + ω²τ²) and phase −atan(ωτ): 0.93 and
 //! 21° for a 6 m rope behind a 0.3 s sensor). (1 + τ·d/dt) undoes that:
 //! with the tip still, φ + τ·φ̇ and φ̇ − τ·(g/l)·sin φ
-//! ([`crate::held_pendulum`]). So at rest after a move, once the pendulums
-//! are no longer driven (the rate within [`SWING_DEADBAND_RAD_S`]), every
+//! ([`crate::held_pendulum`]). So at rest after a move, once the boom has
+//! settled (the rate within [`SETTLED_RAD_S`], where the pendulums are no
+//! longer driven either: [`SWING_DEADBAND_RAD_S`]), every
 //! hypothesis solves the force without the lag with the factor of its swing
 //! so led, and W_fast, the averages, the hold and the load-added rescale
 //! below go on as before with those W_k. A load added at rest (40° → 60°,
@@ -306,6 +307,11 @@ pub const MOVING_RAD_S: f64 = 0.15 * core::f64::consts::PI / 180.0;
 /// did: 1.055 × the load, OVERLOAD at true u 0.898).
 pub const SETTLED_RAD_S: f64 = 0.05 * core::f64::consts::PI / 180.0;
 
+// A settled boom is still and does not drive the pendulums: the lag can be
+// undone from their free swings only then (see "At rest after a move: the
+// force without the lag").
+const _: () = assert!(SETTLED_RAD_S <= SWING_DEADBAND_RAD_S && SETTLED_RAD_S <= MOVING_RAD_S);
+
 /// Cut-off of the one first-order stage W_fast goes through (Hz): the
 /// load's bounce on the boom (1–2 Hz near rated load in a held rope, ±25 %
 /// of the load's pull after a 10 s move stops) passes the force filter at
@@ -408,9 +414,6 @@ pub struct StaticLoadBank<T> {
     /// The angle sensor's lag (s), by which the force without it leads the
     /// pendulums (see the module doc).
     lead_s: T,
-    /// The pendulums were not driven at the last advance (see
-    /// [`SWING_DEADBAND_RAD_S`]).
-    undriven: bool,
 }
 
 /// The bank's answer of one cycle.
@@ -451,7 +454,6 @@ impl<T: Real> StaticLoadBank<T> {
             after_move: false,
             light_at_stop: false,
             lead_s: T::lit(0.0),
-            undriven: true,
         }
     }
 
@@ -498,7 +500,6 @@ impl<T: Real> StaticLoadBank<T> {
         } else {
             (T::lit(0.0), T::lit(0.0))
         };
-        self.undriven = rate_rad_s.abs() <= r0;
         let tip = BoomTip::new(angle_rad.sin_cos_own(), self.geometry.boom_length_m, drive_rate, drive_accel, dt_s);
         self.ropes.update(&tip);
         self.paid_out.update(&tip, self.geometry.paid_out_length_m(angle_rad));
@@ -649,9 +650,10 @@ impl<T: Real> StaticLoadBank<T> {
         // The factors first: which hypotheses weigh, and how far apart they
         // are (motion only).
         // At rest after a move, the force without the sensor's lag and the
-        // pendulums' swings with the lag undone (see the module doc).
+        // pendulums' swings with the lag undone (see the module doc); settled,
+        // the boom is still and drives no pendulum.
         let led = match terms.force_still_n {
-            Some(f) if self.moved && self.still && self.undriven && self.lead_s > T::lit(0.0) => Some((f, self.led_factors(terms.angle_rad))),
+            Some(f) if self.moved && self.settled && self.lead_s > T::lit(0.0) => Some((f, self.led_factors(terms.angle_rad))),
             _ => None,
         };
         let (force, led) = match led {
