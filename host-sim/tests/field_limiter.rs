@@ -6,7 +6,10 @@
 //! 100 Hz: the rope `held` with hanging lengths from 3 m to the tip height at
 //! the move's lowest angle (less 0.3 m), or `thesis`; friction constant
 //! (12 kN up / 8 kN down) or seal (a + b·|F|: 5 kN + 2.5 % up, 3.5 kN + 2 %
-//! down); 2 s at rest before the move and 3 s after. The limiter is calibrated
+//! down); 2 s at rest before the move and 3 s after. Two worlds the limiter
+//! was not built on check it from outside: a friction growing with the
+//! piston's speed, and a lift-off whose bounce is an ideal one of 1–2 Hz
+//! instead of the simulator's. The limiter is calibrated
 //! from the same crane's unloaded 10 s up and down runs (thesis rope), as
 //! `crane-sim calibrate` does, then replays the log. The truth: u = W_true /
 //! rated(θ_true) (the limiter's own rating: quasi-static, safety factor 1.5,
@@ -49,7 +52,14 @@ enum Seals {
     Constant,
     /// 5 kN + 2.5 %·|F| up, 3.5 kN + 2 %·|F| down.
     Seal,
+    /// A law the limiter does not model, growing with the piston's speed:
+    /// 6 kN + 60 kN per m/s up, 4 kN + 40 kN per m/s down (about 11 kN and
+    /// 7 kN more at the calibration run's speed than at rest).
+    Viscous,
 }
+
+/// The two friction laws the limiter models (and the calibration learns).
+const SEALS: [Seals; 2] = [Seals::Constant, Seals::Seal];
 
 fn sensors(seals: Seals, seed: u32) -> SensorModel {
     let (up, down) = match seals {
@@ -57,6 +67,10 @@ fn sensors(seals: Seals, seed: u32) -> SensorModel {
         Seals::Seal => (
             FrictionLaw::Seal { base_n: 5_000.0, per_force: 0.025 },
             FrictionLaw::Seal { base_n: 3_500.0, per_force: 0.02 },
+        ),
+        Seals::Viscous => (
+            FrictionLaw::Viscous { base_n: 6_000.0, per_m_s: 60_000.0 },
+            FrictionLaw::Viscous { base_n: 4_000.0, per_m_s: 40_000.0 },
         ),
     };
     let standard = SensorModel::standard();
@@ -248,7 +262,7 @@ fn replay_with<T: Real, M: HookLoadModel<T> + Clone>(model_l: &M, cal: Calibrati
 
 /// The crane a calibration is of: its sensor's lag, whether the lag is
 /// learned, its friction law.
-type CraneKey = (Option<u64>, bool, bool);
+type CraneKey = (Option<u64>, bool, Seals);
 
 fn replay(sc: &Scenario, precision: Precision) -> Vec<Point> {
     replay_rows(&sc.rows(), sc.seals, precision)
@@ -267,7 +281,7 @@ fn replay_rows(rows: &[SynthRow], seals: Seals, precision: Precision) -> Vec<Poi
         cache.lock().unwrap().push((key, c));
         c
     }
-    let key = (SENSOR_LAG_S.with(|l| l.get()).map(f64::to_bits), LEARN_LAG.with(|l| l.get()), seals == Seals::Seal);
+    let key = (SENSOR_LAG_S.with(|l| l.get()).map(f64::to_bits), LEARN_LAG.with(|l| l.get()), seals);
     match precision {
         Precision::F64 => {
             let c = cached(&C64, key, || calibration_with(model(), seals));
@@ -329,13 +343,13 @@ fn thesis_moves() -> Vec<(f64, f64, f64, f64, RampShape)> {
 /// No OVERLOAD while the true static utilization stays ≤ 0.85: every thesis
 /// move (10 s, 30 s; up, down; linear, cycloidal) at 85 % of the rated load
 /// at 40°, every rope, both friction laws.
-fn no_false_overload(precision: Precision, ropes: &[Rope]) {
+fn no_false_overload(precision: Precision, ropes: &[Rope], seals_of: &[Seals]) {
     let w = 0.85 * rated_kg(40f64.to_radians());
     let mut failures = Vec::new();
     let mut worst: f64 = 0.0;
     for (a, b, dur, ramp, shape) in thesis_moves() {
         for &rope in ropes {
-            for seals in [Seals::Constant, Seals::Seal] {
+            for &seals in seals_of {
                 let sc = Scenario { load_kg: w, from_deg: a, to_deg: b, duration_s: dur, ramp_s: ramp, shape, rope, seals, lift_off_s: None, seed: 7 };
                 let pts = replay(&sc, precision);
                 let peak = pts.iter().map(|p| p.ratio * p.u).fold(0.0, f64::max);
@@ -348,31 +362,31 @@ fn no_false_overload(precision: Precision, ropes: &[Rope]) {
             }
         }
     }
-    println!("{precision:?}: {} false OVERLOADs of {}; highest estimated u {worst:.3}", failures.len(), 16 * ropes.len());
+    println!("{precision:?}: {} false OVERLOADs of {}; highest estimated u {worst:.3}", failures.len(), 8 * ropes.len() * seals_of.len());
     assert!(failures.is_empty(), "{failures:#?}");
 }
 
 #[test]
 fn no_false_overload_at_85_percent_f64() {
-    no_false_overload(Precision::F64, &ROPES);
+    no_false_overload(Precision::F64, &ROPES, &SEALS);
 }
 
 #[test]
 fn no_false_overload_at_85_percent_f32() {
-    no_false_overload(Precision::F32, &ROPES);
+    no_false_overload(Precision::F32, &ROPES, &SEALS);
 }
 
 /// Lowering past the rated radius: 80° → 20° at the speed of the 10 s and
 /// 30 s thesis moves (15 s and 45 s), the loads rated at 45° and at 30°:
 /// OVERLOAD never before true u = 1/1.1 and always before 1.05.
-fn lowering_past_rated_radius(precision: Precision, ropes: &[Rope]) {
+fn lowering_past_rated_radius(precision: Precision, ropes: &[Rope], seals_of: &[Seals]) {
     let mut failures = Vec::new();
     for (dur, ramp) in [(15.0, 1.0), (45.0, 1.5)] {
         for rated_at in [45.0f64, 30.0] {
             let w = rated_kg(rated_at.to_radians());
             for shape in [RampShape::Linear, RampShape::Cycloidal] {
                 for &rope in ropes {
-                    for seals in [Seals::Constant, Seals::Seal] {
+                    for &seals in seals_of {
                         let sc = Scenario { load_kg: w, from_deg: 80.0, to_deg: 20.0, duration_s: dur, ramp_s: ramp, shape, rope, seals, lift_off_s: None, seed: 9 };
                         let pts = replay(&sc, precision);
                         let t105 = pts.iter().find(|p| p.u >= 1.05).map(|p| p.t);
@@ -399,28 +413,28 @@ fn lowering_past_rated_radius(precision: Precision, ropes: &[Rope]) {
             }
         }
     }
-    println!("{precision:?}: {} failures of {}", failures.len(), 16 * ropes.len());
+    println!("{precision:?}: {} failures of {}", failures.len(), 8 * ropes.len() * seals_of.len());
     assert!(failures.is_empty(), "{failures:#?}");
 }
 
 #[test]
 fn lowering_past_rated_radius_f64() {
-    lowering_past_rated_radius(Precision::F64, &ROPES);
+    lowering_past_rated_radius(Precision::F64, &ROPES, &SEALS);
 }
 
 #[test]
 fn lowering_past_rated_radius_f32() {
-    lowering_past_rated_radius(Precision::F32, &ROPES);
+    lowering_past_rated_radius(Precision::F32, &ROPES, &SEALS);
 }
 
 /// Lift-off at 50° (2 s): 90 % of rated → no OVERLOAD; 110 % → OVERLOAD
 /// within 1 s of the load leaving the ground (the end of the lift).
-fn lift_off(precision: Precision) {
+fn lift_off(precision: Precision, seals_of: &[Seals]) {
     let angle = 50.0f64;
     let rated = rated_kg(angle.to_radians());
     let mut failures = Vec::new();
     for rope in ROPES {
-        for seals in [Seals::Constant, Seals::Seal] {
+        for &seals in seals_of {
             for (frac, must) in [(0.9, false), (1.1, true)] {
                 let sc = Scenario { load_kg: frac * rated, from_deg: angle, to_deg: angle, duration_s: 6.0, ramp_s: 0.0, shape: RampShape::Linear, rope, seals, lift_off_s: Some(2.0), seed: 5 };
                 let pts = replay(&sc, precision);
@@ -441,12 +455,12 @@ fn lift_off(precision: Precision) {
 
 #[test]
 fn lift_off_f64() {
-    lift_off(Precision::F64);
+    lift_off(Precision::F64, &SEALS);
 }
 
 #[test]
 fn lift_off_f32() {
-    lift_off(Precision::F32);
+    lift_off(Precision::F32, &SEALS);
 }
 
 /// The log of a session after [`HOLD_BEFORE_S`] at rest: a 10 s cycloidal
@@ -478,7 +492,7 @@ fn lift_off_fast_on_a_slow_sensor(precision: Precision) {
     let mut failures = Vec::new();
     for angle in [20.0f64, 50.0, 80.0] {
         let rated = rated_kg(angle.to_radians());
-        for seals in [Seals::Constant, Seals::Seal] {
+        for seals in SEALS {
             for take_up in [1.0, 0.5] {
                 for (frac, must) in [(0.9, false), (1.1, true)] {
                     let sc = Scenario { load_kg: frac * rated, from_deg: angle, to_deg: angle, duration_s: 6.0, ramp_s: 0.0, shape: RampShape::Linear, rope: Rope::Thesis, seals, lift_off_s: Some(take_up), seed: 5 };
@@ -496,6 +510,106 @@ fn lift_off_fast_on_a_slow_sensor(precision: Precision) {
             }
         }
     }
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
+/// A lift-off whose bounce is not the simulator's: the piston force of a
+/// lift-off at `angle_deg` taken up slowly (2 s, where this crane's bounce
+/// at 1.4–1.6 Hz, or 3.2 Hz at 80°, is barely excited), replaced by an ideal
+/// one, F_0 + (F_1 − F_0)·y(t): y the response of a mass on a spring of
+/// `bounce_hz` and damping ratio `zeta` to the hook's share of the load
+/// rising linearly from 0 to 1 over `take_up_s` (ÿ = ω²(s − y) − 2ζω·ẏ), the
+/// whole load's pull bouncing (in the simulator about 0.75 of it does);
+/// F_0 the force before, F_1 the mean after. Then the same sensors, noise
+/// and quantization as every log here.
+fn lift_off_with_an_ideal_bounce(angle_deg: f64, load_kg: f64, bounce_hz: f64, zeta: f64, take_up_s: f64) -> Vec<SynthRow> {
+    let sc = Scenario { load_kg, from_deg: angle_deg, to_deg: angle_deg, duration_s: 6.0, ramp_s: 0.0, shape: RampShape::Linear, rope: Rope::Thesis, seals: Seals::Constant, lift_off_s: Some(2.0), seed: 5 };
+    let (options, dt) = options_for_rate(RATE_HZ);
+    let mut samples = simulate_program(model(), &sc.program(), &options).expect("simulation");
+    let f0 = samples[0].reactions.piston_force_n;
+    let tail: Vec<f64> = samples.iter().filter(|x| x.t_s >= HOLD_BEFORE_S + 4.0).map(|x| x.reactions.piston_force_n).collect();
+    let f1 = tail.iter().sum::<f64>() / tail.len() as f64;
+    let w = 2.0 * std::f64::consts::PI * bounce_hz;
+    let (mut y, mut v) = (0.0f64, 0.0f64);
+    let mut last_t = 0.0;
+    for x in &mut samples {
+        // Ten semi-implicit Euler steps per sample: ω·h ≤ 0.013 at 2 Hz.
+        let steps = 10;
+        let h = (x.t_s - last_t) / steps as f64;
+        for k in 1..=steps {
+            let t = last_t + h * k as f64;
+            let share = ((t - HOLD_BEFORE_S) / take_up_s).clamp(0.0, 1.0);
+            v += (w * w * (share - y) - 2.0 * zeta * w * v) * h;
+            y += v * h;
+        }
+        last_t = x.t_s;
+        x.reactions.piston_force_n = f0 + (f1 - f0) * y;
+        x.hook_load_kg = load_kg * ((x.t_s - HOLD_BEFORE_S) / take_up_s).clamp(0.0, 1.0);
+    }
+    synthesize(&samples, dt, 0.0, load_kg, &sensors(Seals::Constant, 5))
+}
+
+/// Lift-off against a bounce of 1–2 Hz that is not this crane's
+/// ([`lift_off_with_an_ideal_bounce`]; issue 11 gives 1–2 Hz near the rated
+/// load, and the simulator bounces at 1.4–1.6 Hz at 20–45°): at 20°, 50° and
+/// 80°, bounces of 1, 1.5 and 2 Hz with damping ratios 0.02 and 0.06, taken
+/// up over `take_ups`: 90 % of rated never OVERLOAD, 110 % OVERLOAD within
+/// 1 s of leaving the ground. Returns the failures and prints every case.
+fn lift_off_against_an_ideal_bounce(precision: Precision, take_ups: &[f64]) -> Vec<String> {
+    let mut failures = Vec::new();
+    for angle in [20.0f64, 50.0, 80.0] {
+        let rated = rated_kg(angle.to_radians());
+        for bounce_hz in [1.0, 1.5, 2.0] {
+            for zeta in [0.02, 0.06] {
+                for &take_up in take_ups {
+                    for (frac, must) in [(0.9, false), (1.1, true)] {
+                        let rows = lift_off_with_an_ideal_bounce(angle, frac * rated, bounce_hz, zeta, take_up);
+                        let pts = replay_rows(&rows, Seals::Constant, precision);
+                        let off = HOLD_BEFORE_S + take_up;
+                        let first = first_overload(&pts);
+                        let peak = pts.iter().filter(|p| p.u > 0.0).map(|p| p.ratio * p.u).fold(0.0, f64::max);
+                        let name = format!("{angle:.0} deg, {:.0} % of rated, bounce {bounce_hz} Hz, zeta {zeta}, taken up in {take_up} s", frac * 100.0);
+                        println!("{name:<62} peak estimated u {peak:.3}, OVERLOAD {}", first.map_or("none".into(), |f| format!("at {:+.2} s from leaving the ground", f.0 - off)));
+                        match (must, first) {
+                            (false, Some((t, _))) => failures.push(format!("{name}: OVERLOAD at {t:.2} s (peak estimated u {peak:.3})")),
+                            (true, None) => failures.push(format!("{name}: no OVERLOAD")),
+                            (true, Some((t, _))) if t > off + 1.0 => failures.push(format!("{name}: OVERLOAD {:.2} s after lift", t - off)),
+                            _ => {}
+                        }
+                    }
+                }
+            }
+        }
+    }
+    println!("{precision:?}: {} failures", failures.len());
+    failures
+}
+
+#[test]
+fn lift_off_against_an_ideal_bounce_f64() {
+    let failures = lift_off_against_an_ideal_bounce(Precision::F64, &[0.8, 1.2, 2.0]);
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
+#[test]
+fn lift_off_against_an_ideal_bounce_f32() {
+    let failures = lift_off_against_an_ideal_bounce(Precision::F32, &[0.8, 1.2, 2.0]);
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
+/// The same taken up in 0.5 s and 0.3 s, where the filters that keep a
+/// 1 Hz bounce out cannot also tell 90 % from 110 % within a second. A
+/// bounce of 1 Hz reads 90 % as an OVERLOAD: peak estimated u 1.006–1.044
+/// taken up in 0.5 s, 1.027–1.076 in 0.3 s (its first crest pulls up to
+/// twice the load, and the filters pass a fifth of 1 Hz). At 1.5–2 Hz, 110 %
+/// taken up in 0.3 s is cut 0.99–1.09 s after it leaves the ground (0.93–0.96
+/// s in 0.5 s). In the asserted cases (`lift_off_against_an_ideal_bounce_*`,
+/// 0.8 s and slower) 90 % reads at most 0.983 and 110 % is cut within
+/// 0.84 s.
+#[test]
+#[ignore = "KNOWN GAP: a lift-off snatched in 0.5 s or less against a bounce of 1-2 Hz: 90 % cuts (1 Hz) or, in 0.3 s, 110 % is cut up to 1.09 s after leaving the ground (1.5-2 Hz)"]
+fn lift_off_snatched_against_an_ideal_bounce_known_gap() {
+    let failures = lift_off_against_an_ideal_bounce(Precision::F64, &[0.3, 0.5]);
     assert!(failures.is_empty(), "{failures:#?}");
 }
 
@@ -537,7 +651,7 @@ fn load_added_at_rest_after_a_move(precision: Precision, cases: &[(f64, f64, Rop
     for &(from, to, rope) in cases {
         let w0 = 0.6 * rated_kg(from.min(to).to_radians());
         {
-            for seals in [Seals::Constant, Seals::Seal] {
+            for seals in SEALS {
                 for (frac, must) in [(0.9, false), (1.1, true)] {
                     let w1 = frac * rated_kg(to.to_radians());
                     let name = format!("{from:.0}->{to:.0} 10s {rope:?} {seals:?}: {w0:.0} kg, +{:.0} kg at rest", w1 - w0);
@@ -590,7 +704,7 @@ fn load_lifted_after_an_empty_hook_move(precision: Precision, cases: &[(f64, f64
     const AT_REST_S: f64 = 3.0;
     let mut failures = Vec::new();
     for &(from, to, rope) in cases {
-        for seals in [Seals::Constant, Seals::Seal] {
+        for seals in SEALS {
             for frac in [0.9, 1.1] {
                 let w = frac * rated_kg(to.to_radians());
                 let name = format!("{from:.0}->{to:.0} 10s {rope:?} {seals:?}: empty, then {w:.0} kg lifted at rest");
@@ -714,18 +828,18 @@ fn a_load_added_at_rest_after_a_move_known_gap() {
 /// stopping (to the end of the log), loads 30 % and 80 % of the rated load at
 /// 40°, every thesis move, rope and friction law: within [1.00, 1.10].
 fn band(precision: Precision) {
-    let (m, r) = band_percentiles(precision);
+    let (m, r) = band_percentiles(precision, &SEALS);
     assert!(m[0] >= 1.0 && m[2] <= 1.1 && r[0] >= 1.0 && r[2] <= 1.1, "motion {m:?} rest {r:?}");
 }
 
 /// The band's (p5, p50, p95) in motion and at rest (see [`band`]).
-fn band_percentiles(precision: Precision) -> ([f64; 3], [f64; 3]) {
+fn band_percentiles(precision: Precision, seals_of: &[Seals]) -> ([f64; 3], [f64; 3]) {
     let (mut motion, mut rest) = (Vec::new(), Vec::new());
     for (a, b, dur, ramp, shape) in thesis_moves() {
         for frac in [0.3, 0.8] {
             let w = frac * rated_kg(40f64.to_radians());
             for rope in ROPES {
-                for seals in [Seals::Constant, Seals::Seal] {
+                for &seals in seals_of {
                     let sc = Scenario { load_kg: w, from_deg: a, to_deg: b, duration_s: dur, ramp_s: ramp, shape, rope, seals, lift_off_s: None, seed: 3 };
                     let (_, cv0, cv1, end) = sc.times();
                     let pts = replay(&sc, precision);
@@ -762,6 +876,50 @@ fn band_in_motion_and_at_rest_f32() {
     band(Precision::F32);
 }
 
+/// A friction law the limiter does not model: one that grows with the
+/// piston's speed ([`Seals::Viscous`], 6 kN + 60 kN per m/s up). The
+/// calibration, from 10 s runs, learns it as a constant of 16.8 kN up and
+/// 11.7 kN down (and 0.114 s of lag, against 0.095 s for this sensor with
+/// the modelled laws), so a slower move carries less friction than it
+/// corrects for: raising reads low, lowering high. The safety bounds hold
+/// anyway: no OVERLOAD at 85 % (highest estimated u 0.937), every lowering
+/// past the rated radius cut between true u 1/1.1 and 1.05 (at 0.935–0.967),
+/// lift-off as with the modelled laws. With 140 kN per m/s up (100 down) two
+/// slow lowerings cut early, at true u 0.89; at 200 kN per m/s all 16 slow
+/// ones do. What does not hold is the band:
+/// `band_with_a_speed_dependent_friction_known_gap`.
+fn a_speed_dependent_friction(precision: Precision) {
+    no_false_overload(precision, &ROPES, &[Seals::Viscous]);
+    lowering_past_rated_radius(precision, &ROPES, &[Seals::Viscous]);
+    lift_off(precision, &[Seals::Viscous]);
+}
+
+#[test]
+fn a_speed_dependent_friction_f64() {
+    a_speed_dependent_friction(Precision::F64);
+}
+
+#[test]
+fn a_speed_dependent_friction_f32() {
+    a_speed_dependent_friction(Precision::F32);
+}
+
+/// The band under a friction that grows with the piston's speed
+/// ([`Seals::Viscous`]): in 30 s moves at 30 % of rated the estimate reads
+/// 0.93–0.95 raising and 1.08–1.11 lowering, and 0.89–0.95 at rest after a
+/// slow raise (the friction the limiter takes off there is the calibration
+/// run's). Measured: p5/p50/p95 0.899/1.038/1.142 in motion and
+/// 0.820/1.040/1.108 at rest; at 30 kN per m/s up (20 down)
+/// 0.963/1.039/1.087 and 0.914/1.039/1.078. What would close it: a
+/// speed-proportional part in the calibration's friction law, learned
+/// from runs at two speeds (one run's speed sweep is read as lag).
+#[test]
+#[ignore = "KNOWN GAP: a friction that grows with the piston's speed is learned as a constant at the calibration run's speed; slower moves read outside 1.00-1.10 (p5 0.90 in motion, 0.82 at rest)"]
+fn band_with_a_speed_dependent_friction_known_gap() {
+    let (m, r) = band_percentiles(Precision::F64, &[Seals::Viscous]);
+    assert!(m[0] >= 1.0 && m[2] <= 1.1 && r[0] >= 1.0 && r[2] <= 1.1, "motion {m:?} rest {r:?}");
+}
+
 /// The band in motion against the angle sensor's true lag (the campaign's
 /// cranes have 0.05–0.3 s; the limiter's default is the pendulum's
 /// 0.111 s), each crane calibrated from its own unloaded runs, the lag
@@ -777,7 +935,7 @@ fn band_in_motion_against_sensor_lag() {
     for tau in [0.05, 0.3] {
         SENSOR_LAG_S.with(|l| l.set(Some(tau)));
         println!("first-order lag {tau} s, lag learned:");
-        let (m, r) = band_percentiles(Precision::F64);
+        let (m, r) = band_percentiles(Precision::F64, &SEALS);
         println!("  at rest p5/p95 {:.3}/{:.3}", r[0], r[2]);
         assert!(m[0] >= 1.0 && m[2] <= 1.1, "lag {tau} s: motion {m:?}");
         // At rest too, since the averages stand in motion while a short rope
@@ -796,7 +954,7 @@ fn band_against_sensor_lag_measured() {
         LEARN_LAG.with(|l| l.set(learn));
         for tau in [0.05, 0.11, 0.2, 0.3] {
             SENSOR_LAG_S.with(|l| l.set(Some(tau)));
-            let (m, r) = band_percentiles(Precision::F64);
+            let (m, r) = band_percentiles(Precision::F64, &SEALS);
             println!(
                 "sensor {tau} s, lag {}: motion {:.3}/{:.3}/{:.3} rest {:.3}/{:.3}/{:.3}",
                 if learn { "learned" } else { "default 0.111 s" },
