@@ -8,7 +8,14 @@
 //! - **History** checks across cycles, done by [`PlausibilityMonitor`]:
 //!   - *implausible rate of change*: |Δx| / Δt above the channel's limit
 //!     (defaults: 5000 bar/s, i.e. 50 bar in one 10 ms cycle; 60 °/s, where the
-//!     thesis's fastest manoeuvre moves the boom at about 4 °/s);
+//!     thesis's fastest manoeuvre moves the boom at about 4 °/s), with Δt
+//!     taken as at least the nominal period
+//!     ([`PlausibilityMonitor::with_period_s`]): a reading's noise and
+//!     quantization do not shrink with the interval, and a logger's
+//!     timestamps jitter (±5 ms at 100 Hz puts readings 0.2 ms apart; the
+//!     angle's noise of 0.04° over 1.3 ms is 30 °/s, and a log of a moving
+//!     boom FAULTed every few seconds). A jump is still caught: 0.6° or
+//!     50 bar within one period;
 //!   - *stuck*: a channel has stayed within `stuck_band` of one value for at
 //!     least `stuck_time_s` counted only over cycles in which another channel
 //!     had changed within the last `stuck_time_s` ("frozen while others move").
@@ -160,6 +167,8 @@ struct ChannelHistory<T> {
 pub struct PlausibilityMonitor<T> {
     config: PlausibilityConfig<T>,
     history: [ChannelHistory<T>; 3],
+    /// The shortest interval a rate is taken over (s; see the module doc).
+    period_s: T,
 }
 
 impl<T: Real> PlausibilityMonitor<T> {
@@ -174,7 +183,14 @@ impl<T: Real> PlausibilityMonitor<T> {
         Self {
             config,
             history: [empty; 3],
+            period_s: T::lit(0.0),
         }
+    }
+
+    /// The same, taking every rate over at least `period_s`, the nominal
+    /// period of the cycle (see the module doc).
+    pub fn with_period_s(self, period_s: T) -> Self {
+        Self { period_s, ..self }
     }
 
     /// Forgets the last values (not the stuck timers): called when a cycle had
@@ -195,7 +211,7 @@ impl<T: Real> PlausibilityMonitor<T> {
             let limits = self.config.limits(i);
             if let Some(last) = h.last {
                 if dt_s > T::lit(0.0)
-                    && (v - last).abs() > limits.max_rate_per_s * dt_s
+                    && (v - last).abs() > limits.max_rate_per_s * dt_s.max(self.period_s)
                     && fault.is_none()
                 {
                     fault = Some((i, FaultKind::RateOfChange));
@@ -255,6 +271,27 @@ mod tests {
                 kind: FaultKind::RateOfChange
             }
         );
+    }
+
+    #[test]
+    fn a_reading_early_is_allowed_one_period_of_change_and_no_more() {
+        let mut m = PlausibilityMonitor::new(PlausibilityConfig::<f64>::standard()).with_period_s(0.01);
+        assert!(m.check([50.0, 5.0, 45.0], 0.01).is_ok());
+        // 1.3 ms later, 0.1° and 2 bar of noise: 77 °/s over 1.3 ms, but
+        // within one period's 0.6°.
+        assert!(m.check([52.0, 5.0, 45.1], 0.0013).is_ok());
+        // Without the period, that was a fault.
+        let mut bare = PlausibilityMonitor::new(PlausibilityConfig::<f64>::standard());
+        assert!(bare.check([50.0, 5.0, 45.0], 0.01).is_ok());
+        assert!(bare.check([52.0, 5.0, 45.1], 0.0013).is_err());
+        // A jump beyond one period's change is caught however early it comes.
+        let f = m.check([52.0, 5.0, 45.8], 0.0013).unwrap_err();
+        assert_eq!(f, SensorFault { channel: Channel::BoomAngle, kind: FaultKind::RateOfChange });
+        // A late reading is still allowed its interval's change, not more.
+        let mut late = PlausibilityMonitor::new(PlausibilityConfig::<f64>::standard()).with_period_s(0.01);
+        assert!(late.check([50.0, 5.0, 45.0], 0.01).is_ok());
+        assert!(late.check([50.0, 5.0, 46.1], 0.02).is_ok());
+        assert!(late.check([50.0, 5.0, 47.5], 0.02).is_err());
     }
 
     #[test]

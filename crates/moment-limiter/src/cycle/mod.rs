@@ -158,7 +158,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     pub fn new(model: M, config: LimiterConfig<T>) -> Result<Self, ConfigError> {
         config.validate()?;
         Ok(Self {
-            monitor: PlausibilityMonitor::new(config.plausibility),
+            monitor: PlausibilityMonitor::new(config.plausibility).with_period_s(T::lit(f64::from(config.clock.period_us) * 1e-6)),
             force_lag: (config.effective_angle_sensor_lag_s() > T::lit(0.0)).then(|| {
                 LowPass::new(T::lit(1.0) / (T::two_pi() * config.effective_angle_sensor_lag_s()), 1)
             }),
