@@ -131,6 +131,108 @@ fn faults(j: &serde_json::Value) -> Vec<(u64, String)> {
         .collect()
 }
 
+/// `log` with every timestamp but the first moved by up to ±`jitter_us`
+/// (a fixed xorshift sequence), written to `out`.
+fn jitter_times(log: &Path, out: &Path, jitter_us: u32) {
+    let mut seed = 2_463_534_242u32;
+    rewrite_times(log, out, |k, us| {
+        seed ^= seed << 13;
+        seed ^= seed >> 17;
+        seed ^= seed << 5;
+        let jitter = i64::from(seed % (2 * jitter_us + 1)) - i64::from(jitter_us);
+        if k == 0 { us } else { us + jitter }
+    });
+}
+
+/// The states a `--json` replay entered, in order, and at which samples.
+fn states(j: &serde_json::Value) -> Vec<(u64, String)> {
+    j["events"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|e| (e["sample"].as_u64().unwrap(), e["state"].as_str().unwrap().to_string()))
+        .collect()
+}
+
+/// A logger's clock jitters: samples taken every 10 ms but stamped up to
+/// ±4.9 ms off (0.2–19.8 ms apart, within the 50 ms gap bound) are data,
+/// not a fault. The angle's rate check took its noise over a 1–2 ms step
+/// as an implausible rate (60 °/s × 1.3 ms is less than one count and a
+/// half of noise), and these moves FAULTed every few seconds; it now takes
+/// a rate over at least the 10 ms period. Asserted: the jittered log
+/// enters the same states as the even one, in the same order, and never
+/// FAULT, and the replay notes on stderr that the spacing is uneven. (How
+/// far the events move is `a_jittering_clock_replays_as_the_even_one_known_gap`.)
+#[test]
+fn a_jittering_clock_is_no_fault() {
+    let dir = tempfile::tempdir().unwrap();
+    let cal = example("cal.json");
+    for (from, to) in [("40", "80"), ("80", "40")] {
+        let even = dir.path().join(format!("even_{from}_{to}.csv"));
+        let out = bin()
+            .args(["synth", "--from-deg", from, "--to-deg", to, "--duration", "10", "--load-kg", "3000"])
+            .args(["--rope", "held", "--rate-hz", "100", "--seed", "3", "--out"])
+            .arg(&even)
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{}", text(&out.stderr));
+        let jittered = dir.path().join(format!("jittered_{from}_{to}.csv"));
+        jitter_times(&even, &jittered, 4_900);
+        let args = ["--json", "--calibration", cal.to_str().unwrap()];
+        let (even_out, jittered_out) = (replay(&even, &args), replay(&jittered, &args));
+        // The replay says the spacing is uneven, and only then.
+        assert!(!text(&even_out.stderr).contains("apart"), "{}", text(&even_out.stderr));
+        assert!(text(&jittered_out.stderr).contains("note: the samples are"), "{}", text(&jittered_out.stderr));
+        let (a, b) = (json(&even_out), json(&jittered_out));
+        let (sa, sb) = (states(&a), states(&b));
+        assert!(sb.iter().all(|(_, st)| st != "FAULT"), "{from}->{to}: jittered log FAULTs: {:?}", faults(&b));
+        let names = |v: &[(u64, String)]| v.iter().map(|e| e.1.clone()).collect::<Vec<_>>();
+        assert_eq!(names(&sa), names(&sb), "{from}->{to}: even {sa:?}, jittered {sb:?}");
+        println!("{from}->{to}: states {:?} as the even log's; max utilization {} / {}", names(&sb), a["max_utilization"], b["max_utilization"]);
+    }
+}
+
+/// The same data stamped ±9 ms off its 20 ms grid should replay with its
+/// events within two samples and its highest utilization within 0.002.
+/// It does not: the filters take each step as stamped (a first-order stage
+/// held over a step lags a ramp by about τ − Δt/2, so its lag wobbles with
+/// the steps), and the angle's rate and acceleration, differences of the
+/// filtered angle over the uneven steps, read that wobble: the rated load's
+/// extrapolated angle moved by up to 2°. Stamped so, `overload_lowering.csv`
+/// warns 20 samples (0.40 s) late, is cut 7 samples (0.14 s) late and reads
+/// 1.648 at most instead of 1.573; a 100 Hz 10 s lowering at ±3 ms was cut
+/// 0.26 s late, and in `a_jittering_clock_is_no_fault` 80° → 40° reads
+/// 0.646 at most instead of 0.586. Solving each stage for an
+/// input that runs straight between samples (a first-order hold: the lag τ
+/// for any step) and reading the rate and acceleration off the stages
+/// closes it (the replay then matched within 0.002), but moved the angle
+/// sensor's lag that the calibration learns 20–40 ms short of the sensor's
+/// (first-order 0.1, 0.2 and 0.3 s learned as 0.073, 0.162 and 0.259 s, and
+/// 0.05 s not at all), which the calibration's own test refuses; not done
+/// yet.
+#[test]
+#[ignore = "KNOWN GAP: a log whose timestamps jitter by several ms replays its events up to 0.14-0.40 s late and its utilization up to 10 % off (the filters take each step as stamped)"]
+fn a_jittering_clock_replays_as_the_even_one_known_gap() {
+    let cal = example("cal.json");
+    let dir = tempfile::tempdir().unwrap();
+    let mut failures = Vec::new();
+    for name in ["overload_lowering.csv", "safe_lift.csv", "wire_break.csv"] {
+        let args = ["--json", "--calibration", cal.to_str().unwrap()];
+        let even = json(&replay(&example(name), &args));
+        let jittered = dir.path().join(name);
+        jitter_times(&example(name), &jittered, 9_000);
+        let j = json(&replay(&jittered, &args));
+        let (a, b) = (states(&even), states(&j));
+        let (ua, ub) = (even["max_utilization"].as_f64().unwrap(), j["max_utilization"].as_f64().unwrap());
+        println!("{name}: even {a:?} max u {ua:.4}; jittered {b:?} max u {ub:.4}");
+        let moved = a.len() != b.len() || a.iter().zip(&b).any(|((sa, ea), (sb, eb))| ea != eb || sa.abs_diff(*sb) > 2);
+        if moved || (ua - ub).abs() >= 0.002 {
+            failures.push(name);
+        }
+    }
+    assert!(failures.is_empty(), "{failures:?}");
+}
+
 #[test]
 fn bad_time_is_a_fault_or_an_error_never_exit_0() {
     // The unaltered logs: safe_lift exits 0, so any 2 below is the time's.

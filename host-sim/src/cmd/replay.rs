@@ -213,6 +213,49 @@ pub fn for_each_record_pipelined<R: BufRead + Send>(
     })
 }
 
+/// The spread of a log's sample spacing, short of the gaps the limiter
+/// faults on: a logger that stamps samples as it receives them jitters, and
+/// the limiter takes every step as stamped (docs/log-format.md, "Uneven
+/// timestamps").
+#[derive(Debug, Default)]
+struct Spacing {
+    last_us: Option<i64>,
+    /// Shortest and longest step (µs) of those within the gap bound.
+    range_us: Option<(i64, i64)>,
+}
+
+impl Spacing {
+    /// Spread (µs) above which a replay says so: 2 ms, a fifth of the
+    /// 100 Hz period.
+    const NOTE_ABOVE_US: i64 = 2_000;
+
+    fn add(&mut self, t_us: i64) {
+        let gap_bound_us = i64::from(moment_limiter::clock::ClockConfig::standard().max_gap_us().unwrap_or(u32::MAX));
+        if let Some(last) = self.last_us.replace(t_us) {
+            let step = t_us - last;
+            if step > 0 && step <= gap_bound_us {
+                self.range_us = Some(self.range_us.map_or((step, step), |(lo, hi)| (lo.min(step), hi.max(step))));
+            }
+        }
+    }
+
+    /// The note for stderr, when the steps spread by more than
+    /// [`Self::NOTE_ABOVE_US`].
+    fn note(&self) -> Option<String> {
+        let (lo, hi) = self.range_us?;
+        (hi - lo > Self::NOTE_ABOVE_US).then(|| {
+            format!(
+                "note: the samples are {:.1} to {:.1} ms apart. The limiter filters each step as stamped: if the \
+                 timestamps jitter around an even grid (a logger stamping samples as it receives them), its rate and \
+                 acceleration read the jitter and the events can move by tenths of a second (docs/log-format.md, \
+                 \"Uneven timestamps\").",
+                lo as f64 / 1e3,
+                hi as f64 / 1e3
+            )
+        })
+    }
+}
+
 /// Runs the subcommand; returns the exit code.
 pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
     let file =
@@ -250,11 +293,13 @@ pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
     // goes on, so the exit code still says 0 or 2 (`crate::stdout`).
     let mut out = crate::stdout::stdout();
     let mut text = String::new();
+    let mut spacing = Spacing::default();
 
     let error = for_each_record_pipelined(
         &mut reader,
         |bytes| progress.advance(bytes),
         |record| {
+            spacing.add(record.t_us);
             let (report, event) = replay.feed(record);
             if let Some(r) = recording.as_mut() {
                 r.push(record, &report);
@@ -289,6 +334,10 @@ pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
     }
     out.write_all(text.as_bytes())?;
     out.flush()?;
+    // After the timeline, so the two streams do not interleave on a terminal.
+    if let Some(note) = spacing.note() {
+        eprintln!("{note}");
+    }
     let code = match &error {
         Some(e) => {
             eprintln!("error: {}: {e}", args.log.display());
