@@ -178,6 +178,11 @@ impl<T: Real> SteadyMotion<T> {
     }
 }
 
+/// Least spread of the rest samples' force per kg (standard deviation over
+/// mean) at which [`CalibrationLearner::rest_split`] tells an offset from a
+/// load: rest at 40° and at 80° spreads it by about 0.6.
+pub const REST_SPLIT_SPREAD: f64 = 0.2;
+
 /// Most residuals held back for the look-ahead (1 s at 500 Hz); when full,
 /// the oldest is committed early.
 pub const LOOKAHEAD_CAPACITY: usize = 512;
@@ -357,6 +362,9 @@ pub struct CalibrationLearner<T> {
     rest: (T, u32),
     /// Sum of the model's piston force per kg over the rest samples.
     rest_per_kg: T,
+    /// The rest samples' moments of (model's piston force per kg, residual),
+    /// for [`Self::rest_split`].
+    rest_line: Moments<T>,
     /// Sum of the model's piston force per kg over the steady samples.
     steady_per_kg: T,
     /// The known hook load of the runs observed now (kg).
@@ -387,6 +395,7 @@ impl<T: Real> CalibrationLearner<T> {
             down: Moments::new(),
             rest: (T::lit(0.0), 0),
             rest_per_kg: T::lit(0.0),
+            rest_line: Moments::new(),
             steady_per_kg: T::lit(0.0),
             load_kg: T::lit(0.0),
             check: None,
@@ -444,6 +453,7 @@ impl<T: Real> CalibrationLearner<T> {
                     self.rest.0 += r;
                     self.rest.1 = self.rest.1.saturating_add(1);
                     self.rest_per_kg += f.per_kg;
+                    self.rest_line.add(f.per_kg, r);
                 }
                 return Ok(());
             }
@@ -505,6 +515,7 @@ impl<T: Real> CalibrationLearner<T> {
         self.rest.0 += other.rest.0;
         self.rest.1 = self.rest.1.saturating_add(other.rest.1);
         self.rest_per_kg += other.rest_per_kg;
+        self.rest_line.merge(&other.rest_line);
         self.steady_per_kg += other.steady_per_kg;
         self.max_residual.0 = self.max_residual.0.max(other.max_residual.0);
         self.max_residual.1 = self.max_residual.1.max(other.max_residual.1);
@@ -550,6 +561,27 @@ impl<T: Real> CalibrationLearner<T> {
         let per_kg = self.rest_per_kg / T::lit(f64::from(self.rest.1.max(1)));
         let r = self.mean_rest_residual_n()?;
         (per_kg > T::lit(0.0)).then(|| r / per_kg)
+    }
+
+    /// The rest residual split into a force offset and a hook load,
+    /// r = c + W·f_W(θ) (N, kg), when the rest samples were taken at angles
+    /// whose force per kg f_W differs by at least [`REST_SPLIT_SPREAD`] of
+    /// its mean (standard deviation over mean): an offset is the same at
+    /// every angle, a load's force is not (at 80° a fifth of what it is at
+    /// 40°). Returns (c, W, the rest samples' mean f_W in N/kg); `None`
+    /// when the rest samples cannot tell the two apart.
+    pub fn rest_split(&self) -> Option<(T, T, T)> {
+        let m = &self.rest_line;
+        let n = T::lit(f64::from(m.n));
+        if m.n < 2 || m.mean_x <= T::lit(0.0) {
+            return None;
+        }
+        let sd = (m.cxx / n).max(T::lit(0.0)).sqrt();
+        if sd < T::lit(REST_SPLIT_SPREAD) * m.mean_x {
+            return None;
+        }
+        let load_kg = m.cxy / m.cxx;
+        Some((m.mean_y - load_kg * m.mean_x, load_kg, m.mean_x))
     }
 
     /// The model's mean piston force per kg over the steady samples (N/kg).
