@@ -75,7 +75,8 @@ fn sensors(seals: Seals, seed: u32) -> SensorModel {
     };
     let standard = SensorModel::standard();
     let pendulum = SENSOR_LAG_S.with(|l| l.get()).map_or(standard.pendulum, |tau_s| synth_core::PendulumSensor::FirstOrder { tau_s });
-    SensorModel { seed, friction_up: up, friction_down: down, pendulum, ..standard }
+    let angle_offset_deg = ANGLE_OFFSET_DEG.with(|o| o.get());
+    SensorModel { seed, friction_up: up, friction_down: down, pendulum, angle_offset_deg, ..standard }
 }
 
 thread_local! {
@@ -85,6 +86,8 @@ thread_local! {
     /// `false`: the calibration keeps the limiter's default lag (the
     /// calibration before the lag was learned), for comparison.
     static LEARN_LAG: std::cell::Cell<bool> = const { std::cell::Cell::new(true) };
+    /// The pendulum's zero error (°), which the calibration cannot observe.
+    static ANGLE_OFFSET_DEG: std::cell::Cell<f64> = const { std::cell::Cell::new(0.0) };
 }
 
 /// The rope of a scenario.
@@ -262,7 +265,7 @@ fn replay_with<T: Real, M: HookLoadModel<T> + Clone>(model_l: &M, cal: Calibrati
 
 /// The crane a calibration is of: its sensor's lag, whether the lag is
 /// learned, its friction law.
-type CraneKey = (Option<u64>, bool, Seals);
+type CraneKey = (Option<u64>, bool, Seals, u64);
 
 fn replay(sc: &Scenario, precision: Precision) -> Vec<Point> {
     replay_rows(&sc.rows(), sc.seals, precision)
@@ -281,7 +284,7 @@ fn replay_rows(rows: &[SynthRow], seals: Seals, precision: Precision) -> Vec<Poi
         cache.lock().unwrap().push((key, c));
         c
     }
-    let key = (SENSOR_LAG_S.with(|l| l.get()).map(f64::to_bits), LEARN_LAG.with(|l| l.get()), seals);
+    let key = (SENSOR_LAG_S.with(|l| l.get()).map(f64::to_bits), LEARN_LAG.with(|l| l.get()), seals, ANGLE_OFFSET_DEG.with(|o| o.get()).to_bits());
     match precision {
         Precision::F64 => {
             let c = cached(&C64, key, || calibration_with(model(), seals));
@@ -918,6 +921,51 @@ fn a_speed_dependent_friction_f32() {
 fn band_with_a_speed_dependent_friction_known_gap() {
     let (m, r) = band_percentiles(Precision::F64, &[Seals::Viscous]);
     assert!(m[0] >= 1.0 && m[2] <= 1.1 && r[0] >= 1.0 && r[2] <= 1.1, "motion {m:?} rest {r:?}");
+}
+
+/// Runs `f` with the pendulum reading `offset_deg` off (see
+/// [`ANGLE_OFFSET_DEG`]), then a true pendulum again.
+fn with_pendulum_off_by(offset_deg: f64, f: impl FnOnce()) {
+    ANGLE_OFFSET_DEG.with(|o| o.set(offset_deg));
+    f();
+    ANGLE_OFFSET_DEG.with(|o| o.set(0.0));
+}
+
+/// A pendulum that reads off by a fixed angle: the calibration cannot
+/// observe it (docs/calibration.md), so the limiter reads the model at the
+/// wrong angle. Zeroed within ±1° the bounds hold (f64, every rope, both
+/// friction laws): no OVERLOAD at 85 % (highest estimated u 0.950 at +1°,
+/// 0.920 at −1°), every lowering past the rated radius cut between true u
+/// 1/1.1 and 1.05 (0.934–0.973 at +1°, 0.945–1.010 at −1°). Beyond, see
+/// `pendulum_zero_error_measured`.
+#[test]
+fn a_pendulum_zeroed_within_one_degree_keeps_the_bounds() {
+    for offset in [1.0, -1.0] {
+        with_pendulum_off_by(offset, || {
+            no_false_overload(Precision::F64, &ROPES, &SEALS);
+            lowering_past_rated_radius(Precision::F64, &ROPES, &SEALS);
+        });
+    }
+}
+
+/// The pendulum 2° and 3° off, printed (f64, 64 moves and 64 lowerings
+/// each). Reading high errs toward cutting: at +2° 24 lowerings are cut
+/// before true u 1/1.1 (from 0.874), at +3° 32 (from 0.817) and 8 of the
+/// 85 % moves are cut. Reading low errs the other way but stays inside
+/// J159's 1.05: at −2° the lowerings are cut at true u 0.935–1.028, at −3°
+/// at 0.928–1.041.
+#[test]
+#[ignore = "measurement: the pendulum's zero error beyond 1 deg, which the calibration cannot observe"]
+fn pendulum_zero_error_measured() {
+    for offset in [2.0, -2.0, 3.0, -3.0] {
+        with_pendulum_off_by(offset, || {
+            println!("== pendulum reads {offset:+} deg off");
+            let r = std::panic::catch_unwind(|| no_false_overload(Precision::F64, &ROPES, &SEALS));
+            println!("   85 %: {}", if r.is_ok() { "no OVERLOAD" } else { "OVERLOAD (above)" });
+            let r = std::panic::catch_unwind(|| lowering_past_rated_radius(Precision::F64, &ROPES, &SEALS));
+            println!("   lowering: {}", if r.is_ok() { "every cut between 1/1.1 and 1.05" } else { "failures (above)" });
+        });
+    }
 }
 
 /// The band in motion against the angle sensor's true lag (the campaign's
