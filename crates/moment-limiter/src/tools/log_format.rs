@@ -106,6 +106,9 @@ pub enum LogErrorKind {
     Empty,
     /// The header names no such required column.
     MissingColumn(&'static str),
+    /// The header holds no comma but this separator (`;` or a tab): a
+    /// spreadsheet's export in a locale that writes decimal commas.
+    WrongSeparator(char),
     /// The header names a column twice.
     DuplicateColumn(&'static str),
     /// The first line that is not a comment looks like data, not a header.
@@ -149,6 +152,11 @@ impl fmt::Display for LogError {
         match self.kind {
             LogErrorKind::Empty => f.write_str("empty log: no header line"),
             LogErrorKind::MissingColumn(c) => write!(f, "header has no column `{c}`"),
+            LogErrorKind::WrongSeparator(c) => write!(
+                f,
+                "header is separated by {}, not by commas: a log is comma-separated with decimal points (`{T_S},{P1_BAR},{P2_BAR},{BOOM_ANGLE_DEG}`; docs/log-format.md)",
+                if c == '\t' { "tabs" } else { "`;`" }
+            ),
             LogErrorKind::DuplicateColumn(c) => write!(f, "header names column `{c}` twice"),
             LogErrorKind::NoHeader => write!(
                 f,
@@ -407,6 +415,13 @@ pub fn parse_time_us(text: &str) -> Result<i64, LogErrorKind> {
 }
 
 fn parse_header(text: &str) -> Result<heapless::Vec<Column, MAX_COLUMNS>, LogErrorKind> {
+    // A spreadsheet saved in a locale with decimal commas separates with `;`
+    // (or tabs): say so rather than that `t_s` is missing.
+    if !text.contains(',') {
+        if let Some(sep) = [';', '\t'].into_iter().find(|c| text.contains(*c)) {
+            return Err(LogErrorKind::WrongSeparator(sep));
+        }
+    }
     let mut columns = heapless::Vec::new();
     for name in text.split(',') {
         let name = name.trim();
@@ -443,6 +458,21 @@ mod tests {
         }
         p.finish()?;
         Ok(out)
+    }
+
+    #[test]
+    fn a_semicolon_or_tab_separated_log_is_named_as_such() {
+        for (text, sep) in [("t_s;p1_bar;p2_bar;boom_angle_deg\n0;1,5;2;45\n", ';'), ("t_s\tp1_bar\tp2_bar\tboom_angle_deg\n", '\t')] {
+            let e = parse_all(text).unwrap_err();
+            assert_eq!(e, LogError { line: 1, kind: LogErrorKind::WrongSeparator(sep) });
+            let msg = e.to_string();
+            assert!(msg.contains("not by commas") && msg.contains("decimal points"), "{msg}");
+        }
+        // A comma-separated header with a `;` in a column name is no such case.
+        assert_eq!(
+            parse_all("t_s,p1_bar,p2_bar,boom_angle_deg,note;x\n0,1,2,45,3\n").map(|r| r.len()),
+            Ok(1)
+        );
     }
 
     #[test]
