@@ -2,7 +2,12 @@
 //!
 //! `n` identical first-order stages in series (n = 1…[`MAX_STAGES`]),
 //! discretised exactly for the actual time step:
-//! `y += (1 − e^(−Δt/τ))·(x − y)` per stage, τ = 1/(2π·f_c).
+//! `y += (1 − e^(−Δt/τ))·(x − y)` per stage, τ = 1/(2π·f_c). A filter told
+//! its nominal period P ([`LowPass::with_period_s`], as the limiter's are)
+//! keeps that step at P and, at any other step, the gain Δt/(Λ + Δt) that
+//! lags a ramp by the same Λ as at P: uneven steps (a jittering clock, a
+//! gap bridged in sub-steps) then do not make the lag, and so the
+//! differences of the output, wobble.
 //!
 //! Why this filter and not a sharper one:
 //! - its impulse response is never negative, so it **never overshoots** (no
@@ -54,6 +59,9 @@ pub struct LowPass<T> {
     step: Option<Step<T>>,
     /// Outputs of the stages; `None` until the first sample.
     stages: Option<[T; MAX_STAGES]>,
+    /// The nominal period P (s) and each stage's lag behind a ramp at it,
+    /// Λ = P/(e^(P/τ) − 1), kept at every other step (see [`Self::with_period_s`]).
+    nominal: Option<(T, T)>,
 }
 
 /// What a time step Δt costs to know: the gain 1 − e^(−Δt/τ) of a stage and
@@ -76,7 +84,26 @@ impl<T: Real> LowPass<T> {
             stages_t: T::lit(stage_count as f64),
             step: None,
             stages: None,
+            nominal: None,
         }
+    }
+
+    /// The same filter for samples that should come every `period_s` but
+    /// may not (a logger's jittering clock, a gap bridged in sub-steps).
+    /// At the period each stage is the exact one, y += (1 − e^(−P/τ))·(x − y),
+    /// which lags a ramp by Λ = P/(e^(P/τ) − 1) ≈ τ − P/2. At any other
+    /// step Δt the exact stage would lag by Δt/(e^(Δt/τ) − 1), so the lag
+    /// would wobble with uneven steps, and so would the differences of the
+    /// output (a lowering's rate and acceleration, and with them the rated
+    /// load's angle: a log stamped ±3 ms off its grid was cut 0.26 s late).
+    /// There the stage's gain is Δt/(Λ + Δt) instead (the implicit Euler
+    /// step of a stage of time constant Λ): it lags a ramp by exactly Λ for
+    /// every Δt, and equals the exact gain at Δt = P. In (0, 1) for every
+    /// Δt > 0: stable, no overshoot, monotone.
+    pub fn with_period_s(self, period_s: T) -> Self {
+        let x = period_s / self.tau_s;
+        let nominal = (period_s > T::lit(0.0) && x.is_finite()).then(|| (period_s, period_s / (x.exp() - T::lit(1.0))));
+        Self { nominal, ..self }
     }
 
     /// The step's exponentials, from the cache when Δt is the last one's.
@@ -85,6 +112,14 @@ impl<T: Real> LowPass<T> {
             Some(step) if step.dt_s == dt_s => step,
             _ => {
                 let x = dt_s / self.tau_s;
+                if let Some((period_s, lag_s)) = self.nominal {
+                    // Within a millionth of the period: the period (the
+                    // step's float from integer ticks).
+                    if (dt_s - period_s).abs() > period_s * T::lit(1e-6) {
+                        let gain = if dt_s > T::lit(0.0) { dt_s / (lag_s + dt_s) } else { T::lit(0.0) };
+                        return Step { dt_s, gain, delay_s: self.stages_t * lag_s };
+                    }
+                }
                 let delay_s = if x > T::lit(1e-6) && x.is_finite() {
                     self.stages_t * dt_s / (x.exp() - T::lit(1.0))
                 } else {
@@ -97,7 +132,8 @@ impl<T: Real> LowPass<T> {
 
     /// Low-frequency group delay (s) for samples `dt_s` apart: the lag behind
     /// a ramp, n·Δt/(e^(Δt/τ) − 1) for the discretised stages (n·τ − n·Δt/2
-    /// to second order; n·τ as Δt → 0).
+    /// to second order; n·τ as Δt → 0); with a nominal period P
+    /// ([`Self::with_period_s`]), n·Λ = n·P/(e^(P/τ) − 1) at every step.
     pub fn delay_s(&self, dt_s: T) -> T {
         self.step_for(dt_s).delay_s
     }
@@ -187,6 +223,34 @@ mod tests {
             9.99 - y
         );
         assert!((f.delay_s(0.01) - (4.0 * tau - 0.02)).abs() < 1e-3);
+    }
+
+    /// With a nominal period, a ramp sampled 0.2–19.8 ms apart is followed
+    /// with the lag it has at the period, so the output's differences are
+    /// the ramp's slope (the exact stage at each step read it 0.949–1.030 of
+    /// itself); at the period itself the stage is the exact one, bit for bit.
+    #[test]
+    fn with_a_period_uneven_steps_keep_the_lag_and_even_ones_are_unchanged() {
+        let mut f = LowPass::new(1.2_f64, 4).with_period_s(0.01);
+        let (mut t, mut seed, mut prev, mut worst) = (0.0, 12345u32, None::<(f64, f64)>, 0.0f64);
+        for k in 0..3000 {
+            seed = seed.wrapping_mul(1_103_515_245).wrapping_add(12345);
+            let dt = 0.0002 + 0.0196 * f64::from(seed >> 16) / 65_536.0;
+            t += dt;
+            let y = f.update(2.0 * t, dt);
+            if let (Some((t0, y0)), true) = (prev, k > 300) {
+                worst = worst.max(((y - y0) / (t - t0) - 2.0).abs());
+                assert!((2.0 * t - y - 2.0 * f.delay_s(dt)).abs() < 1e-6, "lag at {t}");
+            }
+            prev = Some((t, y));
+        }
+        assert!(worst < 1e-6, "slope off by {worst}");
+        let (mut a, mut b) = (LowPass::new(1.2_f64, 4), LowPass::new(1.2_f64, 4).with_period_s(0.01));
+        for k in 0..500 {
+            let x = (f64::from(k) * 0.37).sin() * 100.0 + f64::from(k);
+            assert_eq!(a.update(x, 0.01).to_bits(), b.update(x, 0.01).to_bits(), "sample {k}");
+        }
+        assert_eq!(a.delay_s(0.01), b.delay_s(0.01));
     }
 
     #[test]

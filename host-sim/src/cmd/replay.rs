@@ -245,10 +245,9 @@ impl Spacing {
         let (lo, hi) = self.range_us?;
         (hi - lo > Self::NOTE_ABOVE_US).then(|| {
             format!(
-                "note: the samples are {:.1} to {:.1} ms apart. The limiter filters each step as stamped: if the \
-                 timestamps jitter around an even grid (a logger stamping samples as it receives them), its rate and \
-                 acceleration read the jitter and the events can move by tenths of a second (docs/log-format.md, \
-                 \"Uneven timestamps\").",
+                "note: the samples are {:.1} to {:.1} ms apart. If the timestamps jitter around an even grid (a \
+                 logger stamping samples as it receives them), the events can move by a few samples against the \
+                 evenly stamped log (docs/log-format.md, \"Uneven timestamps\").",
                 lo as f64 / 1e3,
                 hi as f64 / 1e3
             )

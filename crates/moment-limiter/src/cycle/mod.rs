@@ -132,6 +132,8 @@ pub struct Limiter<T, M> {
     since_restart_s: Option<T>,
     previous_angle_deg: Option<T>,
     previous_rate_deg_s: Option<T>,
+    /// The step the previous rate was taken over (s; 0: none).
+    previous_dt_s: T,
     moving_for_s: T,
     bank: Option<StaticLoadBank<T>>,
     /// The gap in the good readings (s): the bad cycles since the last
@@ -157,18 +159,20 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     /// A limiter that has not run its self-test yet (it reports FAULT).
     pub fn new(model: M, config: LimiterConfig<T>) -> Result<Self, ConfigError> {
         config.validate()?;
+        let period_s = T::lit(f64::from(config.clock.period_us) * 1e-6);
         Ok(Self {
-            monitor: PlausibilityMonitor::new(config.plausibility).with_period_s(T::lit(f64::from(config.clock.period_us) * 1e-6)),
+            monitor: PlausibilityMonitor::new(config.plausibility).with_period_s(period_s),
             force_lag: (config.effective_angle_sensor_lag_s() > T::lit(0.0)).then(|| {
-                LowPass::new(T::lit(1.0) / (T::two_pi() * config.effective_angle_sensor_lag_s()), 1)
+                LowPass::new(T::lit(1.0) / (T::two_pi() * config.effective_angle_sensor_lag_s()), 1).with_period_s(period_s)
             }),
-            force_filter: LowPass::new(config.filter_hz, config.filter_stages),
-            force_still_filter: LowPass::new(config.filter_hz, config.filter_stages),
+            force_filter: LowPass::new(config.filter_hz, config.filter_stages).with_period_s(period_s),
+            force_still_filter: LowPass::new(config.filter_hz, config.filter_stages).with_period_s(period_s),
             static_friction_share: T::lit(1.0),
             since_restart_s: None,
-            angle_filter: LowPass::new(config.filter_hz, config.filter_stages),
+            angle_filter: LowPass::new(config.filter_hz, config.filter_stages).with_period_s(period_s),
             previous_angle_deg: None,
             previous_rate_deg_s: None,
+            previous_dt_s: T::lit(0.0),
             moving_for_s: T::lit(0.0),
             bank: config.swing.map(|g| StaticLoadBank::new(g).with_lead_s(config.effective_angle_sensor_lag_s())),
             gap_s: T::lit(0.0),

@@ -79,6 +79,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         self.direction.filters_restarted();
         self.previous_angle_deg = None;
         self.previous_rate_deg_s = None;
+        self.previous_dt_s = T::lit(0.0);
         self.moving_for_s = T::lit(0.0);
     }
 
@@ -204,11 +205,21 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             _ => self.previous_rate_deg_s.unwrap_or(T::lit(0.0)),
         };
         self.previous_angle_deg = Some(angle_f);
+        // Each rate is the mean over its step, so two of them stand half of
+        // each step apart: at uneven steps (a jittering logger's clock, 0.2
+        // and 19.8 ms in a row) dividing by this step alone read the
+        // acceleration up to 50 times too large. At even steps the same.
+        let span_s = if self.previous_dt_s > T::lit(0.0) && self.previous_dt_s != dt_s {
+            (dt_s + self.previous_dt_s) * T::lit(0.5)
+        } else {
+            dt_s
+        };
         let accel_f = match self.previous_rate_deg_s {
-            Some(prev) if dt_s > T::lit(0.0) => (rate_f - prev) / dt_s,
+            Some(prev) if span_s > T::lit(0.0) => (rate_f - prev) / span_s,
             _ => T::lit(0.0),
         };
         self.previous_rate_deg_s = Some(rate_f);
+        self.previous_dt_s = dt_s;
         let previous_direction = self.direction.current();
         let direction = self.direction.update(rate_f, dt_s, force_f);
         self.moving_for_s = if direction == Direction::Still {
