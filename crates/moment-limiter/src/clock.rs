@@ -125,6 +125,12 @@ pub fn write_micros_as_seconds<W: core::fmt::Write>(w: &mut W, us: i64) -> core:
     write!(w, "{sign}{}.{:03}", magnitude / 1000, magnitude % 1000)
 }
 
+/// `us` microseconds in seconds: integer to float on the FPU, then one
+/// correctly rounded division (no f64: soft float on the controller).
+fn micros_as_seconds<T: Real>(us: u32) -> T {
+    T::from_count(us) / T::from_count(TICKS_PER_SECOND)
+}
+
 /// The clock's rules (see the module doc).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct ClockConfig {
@@ -141,6 +147,12 @@ impl ClockConfig {
             period_us: 10_000,
             max_gap_periods: 5,
         }
+    }
+
+    /// The nominal period in seconds, converted as [`Clock::advance`]
+    /// converts a step, so a step of one period is this value exactly.
+    pub fn period_s<T: Real>(&self) -> T {
+        micros_as_seconds(self.period_us)
     }
 
     /// Longest allowed step (µs), or `None` if it does not fit the clock.
@@ -194,12 +206,7 @@ impl<T: Real> Clock<T> {
             Err(ClockFault::Gap { elapsed_us })
         } else {
             if self.step.0 != elapsed_us {
-                self.step = (
-                    elapsed_us,
-                    // Integer to float on the FPU, then one correctly rounded
-                    // division: no f64 (soft float on the controller).
-                    T::from_count(elapsed_us) / T::from_count(TICKS_PER_SECOND),
-                );
+                self.step = (elapsed_us, micros_as_seconds(elapsed_us));
             }
             Ok(self.step.1)
         }

@@ -113,8 +113,9 @@ impl<T: Real> LowPass<T> {
             _ => {
                 let x = dt_s / self.tau_s;
                 if let Some((period_s, lag_s)) = self.nominal {
-                    // Within a millionth of the period: the period (the
-                    // step's float from integer ticks).
+                    // Within a millionth of the period: the period (a
+                    // period converted to seconds otherwise than the step;
+                    // the limiter's are alike, `ClockConfig::period_s`).
                     if (dt_s - period_s).abs() > period_s * T::lit(1e-6) {
                         let gain = if dt_s > T::lit(0.0) { dt_s / (lag_s + dt_s) } else { T::lit(0.0) };
                         return Step { dt_s, gain, delay_s: self.stages_t * lag_s };

@@ -159,7 +159,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     /// A limiter that has not run its self-test yet (it reports FAULT).
     pub fn new(model: M, config: LimiterConfig<T>) -> Result<Self, ConfigError> {
         config.validate()?;
-        let period_s = T::lit(f64::from(config.clock.period_us) * 1e-6);
+        let period_s = config.clock.period_s();
         Ok(Self {
             monitor: PlausibilityMonitor::new(config.plausibility).with_period_s(period_s),
             force_lag: (config.effective_angle_sensor_lag_s() > T::lit(0.0)).then(|| {
