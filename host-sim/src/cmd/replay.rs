@@ -215,8 +215,8 @@ pub fn for_each_record_pipelined<R: BufRead + Send>(
 
 /// The spread of a log's sample spacing, short of the gaps the limiter
 /// faults on: a logger that stamps samples as it receives them jitters, and
-/// the limiter takes every step as stamped (docs/log-format.md, "Uneven
-/// timestamps").
+/// such a log replays a few samples off the evenly stamped one
+/// (docs/log-format.md, "Uneven timestamps").
 #[derive(Debug, Default)]
 struct Spacing {
     last_us: Option<i64>,
@@ -229,11 +229,16 @@ impl Spacing {
     /// 100 Hz period.
     const NOTE_ABOVE_US: i64 = 2_000;
 
+    /// The longest step the replay's clock takes as no gap (µs).
+    const GAP_BOUND_US: i64 = match moment_limiter::clock::ClockConfig::standard().max_gap_us() {
+        Some(us) => us as i64,
+        None => i64::MAX,
+    };
+
     fn add(&mut self, t_us: i64) {
-        let gap_bound_us = i64::from(moment_limiter::clock::ClockConfig::standard().max_gap_us().unwrap_or(u32::MAX));
         if let Some(last) = self.last_us.replace(t_us) {
             let step = t_us - last;
-            if step > 0 && step <= gap_bound_us {
+            if step > 0 && step <= Self::GAP_BOUND_US {
                 self.range_us = Some(self.range_us.map_or((step, step), |(lo, hi)| (lo.min(step), hi.max(step))));
             }
         }
