@@ -616,12 +616,17 @@ fn lift_off_snatched_against_an_ideal_bounce_known_gap() {
     assert!(failures.is_empty(), "{failures:#?}");
 }
 
-/// Runs `f` on this thread with the angle sensor a first-order lag of
-/// `tau_s` (see [`SENSOR_LAG_S`]), then the standard sensor again.
-fn behind_a_lagging_sensor(tau_s: f64, f: impl FnOnce()) {
-    SENSOR_LAG_S.with(|l| l.set(Some(tau_s)));
+/// Runs `f` with this thread's `setting` at `value`, then as before.
+fn with_setting<V: Copy>(setting: &'static std::thread::LocalKey<std::cell::Cell<V>>, value: V, f: impl FnOnce()) {
+    let before = setting.with(|c| c.replace(value));
     f();
-    SENSOR_LAG_S.with(|l| l.set(None));
+    setting.with(|c| c.set(before));
+}
+
+/// Runs `f` on this thread with the angle sensor a first-order lag of
+/// `tau_s` (see [`SENSOR_LAG_S`]).
+fn behind_a_lagging_sensor(tau_s: f64, f: impl FnOnce()) {
+    with_setting(&SENSOR_LAG_S, Some(tau_s), f);
 }
 
 #[test]
@@ -928,11 +933,9 @@ fn band_with_a_speed_dependent_friction_known_gap() {
 }
 
 /// Runs `f` with the pendulum reading `offset_deg` off (see
-/// [`ANGLE_OFFSET_DEG`]), then a true pendulum again.
+/// [`ANGLE_OFFSET_DEG`]).
 fn with_pendulum_off_by(offset_deg: f64, f: impl FnOnce()) {
-    ANGLE_OFFSET_DEG.with(|o| o.set(offset_deg));
-    f();
-    ANGLE_OFFSET_DEG.with(|o| o.set(0.0));
+    with_setting(&ANGLE_OFFSET_DEG, offset_deg, f);
 }
 
 /// A pendulum that reads off by a fixed angle: the calibration cannot
@@ -985,14 +988,15 @@ fn pendulum_zero_error_measured() {
 #[test]
 fn band_in_motion_against_sensor_lag() {
     for tau in [0.05, 0.3] {
-        SENSOR_LAG_S.with(|l| l.set(Some(tau)));
-        println!("first-order lag {tau} s, lag learned:");
-        let (m, r) = band_percentiles(Precision::F64, &SEALS);
-        println!("  at rest p5/p95 {:.3}/{:.3}", r[0], r[2]);
-        assert!(m[0] >= 1.0 && m[2] <= 1.1, "lag {tau} s: motion {m:?}");
-        // At rest too, since the averages stand in motion while a short rope
-        // cannot weigh (the p5 was 0.994 at 0.3 s before).
-        assert!(r[0] >= 1.0 && r[2] <= 1.1, "lag {tau} s: at rest {r:?}");
+        behind_a_lagging_sensor(tau, || {
+            println!("first-order lag {tau} s, lag learned:");
+            let (m, r) = band_percentiles(Precision::F64, &SEALS);
+            println!("  at rest p5/p95 {:.3}/{:.3}", r[0], r[2]);
+            assert!(m[0] >= 1.0 && m[2] <= 1.1, "lag {tau} s: motion {m:?}");
+            // At rest too, since the averages stand in motion while a short rope
+            // cannot weigh (the p5 was 0.994 at 0.3 s before).
+            assert!(r[0] >= 1.0 && r[2] <= 1.1, "lag {tau} s: at rest {r:?}");
+        });
     }
 }
 
@@ -1003,16 +1007,18 @@ fn band_in_motion_against_sensor_lag() {
 #[ignore = "measurement"]
 fn band_against_sensor_lag_measured() {
     for learn in [true, false] {
-        LEARN_LAG.with(|l| l.set(learn));
-        for tau in [0.05, 0.11, 0.2, 0.3] {
-            SENSOR_LAG_S.with(|l| l.set(Some(tau)));
-            let (m, r) = band_percentiles(Precision::F64, &SEALS);
-            println!(
-                "sensor {tau} s, lag {}: motion {:.3}/{:.3}/{:.3} rest {:.3}/{:.3}/{:.3}",
-                if learn { "learned" } else { "default 0.111 s" },
-                m[0], m[1], m[2], r[0], r[1], r[2]
-            );
-        }
+        with_setting(&LEARN_LAG, learn, || {
+            for tau in [0.05, 0.11, 0.2, 0.3] {
+                behind_a_lagging_sensor(tau, || {
+                    let (m, r) = band_percentiles(Precision::F64, &SEALS);
+                    println!(
+                        "sensor {tau} s, lag {}: motion {:.3}/{:.3}/{:.3} rest {:.3}/{:.3}/{:.3}",
+                        if learn { "learned" } else { "default 0.111 s" },
+                        m[0], m[1], m[2], r[0], r[1], r[2]
+                    );
+                });
+            }
+        });
     }
 }
 
