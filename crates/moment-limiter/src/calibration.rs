@@ -359,12 +359,10 @@ pub struct CalibrationLearner<T> {
     pending: heapless::Deque<Pending<T>, LOOKAHEAD_CAPACITY>,
     up: Moments<T>,
     down: Moments<T>,
-    rest: (T, u32),
-    /// Sum of the model's piston force per kg over the rest samples.
-    rest_per_kg: T,
-    /// The rest samples' moments of (model's piston force per kg, residual),
-    /// for [`Self::rest_split`].
-    rest_line: Moments<T>,
+    /// The rest samples' moments of (model's piston force per kg, residual):
+    /// their mean residual is the offset, their line the offset and a load
+    /// told apart ([`Self::rest_split`]).
+    rest: Moments<T>,
     /// Sum of the model's piston force per kg over the steady samples.
     steady_per_kg: T,
     /// The known hook load of the runs observed now (kg).
@@ -393,9 +391,7 @@ impl<T: Real> CalibrationLearner<T> {
             pending: heapless::Deque::new(),
             up: Moments::new(),
             down: Moments::new(),
-            rest: (T::lit(0.0), 0),
-            rest_per_kg: T::lit(0.0),
-            rest_line: Moments::new(),
+            rest: Moments::new(),
             steady_per_kg: T::lit(0.0),
             load_kg: T::lit(0.0),
             check: None,
@@ -450,10 +446,7 @@ impl<T: Real> CalibrationLearner<T> {
                     let (f, inertia) =
                         model_force_terms(model, m.boom.angle_rad, m.accel_rad_s2())?;
                     let r = m.piston_force_n - inertia - f.at(self.load_kg);
-                    self.rest.0 += r;
-                    self.rest.1 = self.rest.1.saturating_add(1);
-                    self.rest_per_kg += f.per_kg;
-                    self.rest_line.add(f.per_kg, r);
+                    self.rest.add(f.per_kg, r);
                 }
                 return Ok(());
             }
@@ -512,10 +505,7 @@ impl<T: Real> CalibrationLearner<T> {
     pub fn merge(&mut self, other: &Self) {
         self.up.merge(&other.up);
         self.down.merge(&other.down);
-        self.rest.0 += other.rest.0;
-        self.rest.1 = self.rest.1.saturating_add(other.rest.1);
-        self.rest_per_kg += other.rest_per_kg;
-        self.rest_line.merge(&other.rest_line);
+        self.rest.merge(&other.rest);
         self.steady_per_kg += other.steady_per_kg;
         self.max_residual.0 = self.max_residual.0.max(other.max_residual.0);
         self.max_residual.1 = self.max_residual.1.max(other.max_residual.1);
@@ -550,7 +540,7 @@ impl<T: Real> CalibrationLearner<T> {
 
     /// Number of samples at rest with the seals released.
     pub fn rest_count(&self) -> u32 {
-        self.rest.1
+        self.rest.n
     }
 
     /// The hook load (kg) the mean rest residual would be (the residual over
@@ -558,7 +548,7 @@ impl<T: Real> CalibrationLearner<T> {
     /// on the "unloaded" run weighs, or how far a known-load run is from its
     /// stated weight.
     pub fn rest_load_kg(&self) -> Option<T> {
-        let per_kg = self.rest_per_kg / T::lit(f64::from(self.rest.1.max(1)));
+        let per_kg = self.rest.mean_x;
         let r = self.mean_rest_residual_n()?;
         (per_kg > T::lit(0.0)).then(|| r / per_kg)
     }
@@ -571,7 +561,7 @@ impl<T: Real> CalibrationLearner<T> {
     /// 40°). Returns (c, W, the rest samples' mean f_W in N/kg); `None`
     /// when the rest samples cannot tell the two apart.
     pub fn rest_split(&self) -> Option<(T, T, T)> {
-        let m = &self.rest_line;
+        let m = &self.rest;
         let n = T::lit(f64::from(m.n));
         if m.n < 2 || m.mean_x <= T::lit(0.0) {
             return None;
@@ -592,7 +582,7 @@ impl<T: Real> CalibrationLearner<T> {
 
     /// Mean residual at rest (N): the force offset, if any rest sample.
     pub fn mean_rest_residual_n(&self) -> Option<T> {
-        (self.rest.1 > 0).then(|| self.rest.0 / T::lit(f64::from(self.rest.1)))
+        (self.rest.n > 0).then_some(self.rest.mean_y)
     }
 
     /// Mean residuals (r_up, r_down) in N, if both directions have samples.
@@ -629,7 +619,7 @@ impl<T: Real> CalibrationLearner<T> {
         }
         let one = T::lit(1.0);
         let (offset, from_rest) = match self.mean_rest_residual_n() {
-            Some(rest) if self.rest.1 >= min_samples.max(1) => (rest, true),
+            Some(rest) if self.rest.n >= min_samples.max(1) => (rest, true),
             _ => {
                 // Intercepts of the lines r = c + s·b·F with the offset
                 // unknown: the symmetric split.
