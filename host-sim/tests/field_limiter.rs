@@ -831,6 +831,185 @@ fn a_load_added_at_rest_after_a_move_known_gap() {
     load_added_at_rest_after_a_move(Precision::F64, &ADDED_GAP);
 }
 
+/// The cases of [`ADDED_GAP`] but the 3 m rope stopped at 80°: there the
+/// swing takes p1 past its range (210 bar) at every crest once the load is
+/// added, and each FAULT starts the mean again (see the known gap).
+const ADDED_WEIGHED: [(f64, f64, Rope); 3] = [
+    (40.0, 60.0, Rope::Held(0.0)),
+    (40.0, 80.0, Rope::Held(0.25)),
+    (40.0, 80.0, Rope::Held(1.0)),
+];
+
+/// A load added at rest where no rope of the bank follows the swing (the
+/// moves and ropes of [`ADDED_WEIGHED`]; 60 % of rated, `at_rest_s` at rest,
+/// then 90 % or 110 % of the rated load taken up over 0.5 s, 20 s more at
+/// rest), weighed by the mean force over one swing period whatever the rope
+/// (`moment_limiter::period_mean`). Asserted for 110 %: from at most
+/// `bound(P)` after the take-up (P the true rope's swing period) to the end,
+/// the limiter cuts (OVERLOAD, or FAULT where the swing takes p1 past its
+/// range) and the estimate (×1.05) stays at or above 1/1.1 of the true load
+/// wherever it reads. Printed for 90 %: the highest estimated u.
+fn load_added_where_no_rope_follows_the_swing(precision: Precision, at_rest_s: f64, bound: impl Fn(f64) -> f64) {
+    const TAKE_UP_S: f64 = 0.5;
+    const AFTER_S: f64 = 20.0;
+    let mut failures = Vec::new();
+    for &(from, to, rope) in &ADDED_WEIGHED {
+        let w0 = 0.6 * rated_kg(from.min(to).to_radians());
+        let length = match rope_choice(rope, from.min(to)) {
+            RopeChoice::Held { length_m: Some(l) } => l,
+            other => panic!("a held rope of known length, not {other:?}"),
+        };
+        let period = 2.0 * std::f64::consts::PI * (length / 9.81).sqrt();
+        let bound = bound(period);
+        for seals in SEALS {
+            for frac in [0.9, 1.1] {
+                let w1 = frac * rated_kg(to.to_radians());
+                let name = format!("{from:.0}->{to:.0} 10s {length:.1} m rope {seals:?}, {at_rest_s:.0} s at rest: {w0:.0} kg, then {w1:.0} kg");
+                let rows = lift_after_a_move(from, to, rope, seals, w0, at_rest_s, TAKE_UP_S, w1, AFTER_S);
+                let pts = replay_rows(&rows, seals, precision);
+                let lifted = HOLD_BEFORE_S + 10.0 + at_rest_s + TAKE_UP_S;
+                let after: Vec<&Point> = pts.iter().filter(|q| q.t >= lifted).collect();
+                // From when on `ok` holds to the end (s after the take-up).
+                let held_from = |ok: &dyn Fn(&Point) -> bool| match after.iter().rposition(|q| !ok(q)) {
+                    None => Some(0.0),
+                    Some(i) => after.get(i + 1).map(|q| q.t - lifted),
+                };
+                let fault = |q: &Point| q.state == LimiterState::Fault;
+                let seen = held_from(&|q: &Point| fault(q) || q.ratio >= 1.0 / 1.1);
+                let cut = held_from(&|q: &Point| fault(q) || q.state == LimiterState::Overload);
+                let u_high = after.iter().filter(|q| !fault(q)).map(|q| q.ratio * q.u).fold(0.0, f64::max);
+                let first = first_overload(&pts);
+                println!(
+                    "{name:<78} P {period:.1} s: >= true/1.1 from {} s, cut from {} s (bound {bound:.1} s), first OVERLOAD {}, highest estimated u {u_high:.3}",
+                    seen.map_or("never".into(), |s| format!("{s:+.2}")),
+                    cut.map_or("never".into(), |s| format!("{s:+.2}")),
+                    first.map_or("none".into(), |f| format!("at {:+.2} s, true u {:.3}", f.0 - lifted, f.1))
+                );
+                if frac > 1.0 {
+                    if seen.is_none_or(|s| s > bound) {
+                        failures.push(format!("{name}: estimate at 1/1.1 of the true load from {seen:?} s, bound {bound:.1} s"));
+                    }
+                    if cut.is_none_or(|s| s > bound) {
+                        failures.push(format!("{name}: cut from {cut:?} s, bound {bound:.1} s"));
+                    }
+                }
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
+/// 3 s at rest (the known gap's cases, where the load is added before the
+/// swing's period is known): the mean needs P·(1 + 1/3) of the new load and
+/// 1 s of confirmation, and the force filter's delay and step response come
+/// on top: bound P·4/3 + 3 s. Before, 110 % on the 6.0 m and 14.8 m ropes
+/// stopped at 80° was never held cut in the 20 s (cut at +4.5 s and +18.2 s,
+/// released at the next low of the swing), and on the 3 m rope at 60° held
+/// cut from +9.3 s; 90 % there cut at a true 0.90 after 10.2 s.
+fn load_added_before_the_period_is_known(precision: Precision) {
+    load_added_where_no_rope_follows_the_swing(precision, 3.0, |p| p * (1.0 + 1.0 / 3.0) + 3.0);
+}
+
+/// 14 s at rest (the swing's period found before the take-up): the load
+/// read from the force's ratio to the same phase one period earlier, taken
+/// where the swing pulls at least the load (`STEP_PULL`): bound half a
+/// period to reach that half, the take-up, the force filter's delay and
+/// response and three bins' ratios (P/2 + 2 s). Before, 110 % on the 6.0 m
+/// and 14.8 m ropes was never held cut in the 20 s, and on the 3 m rope held
+/// cut from +8.9 s. 90 % on the 3 m rope is still cut 6.1 s after the take-up
+/// at a true 0.90: the bank's ropes read the swing's crest 1.02 of rated
+/// (1.09 before) before the mean of the new load is found.
+fn load_added_to_a_steady_swing(precision: Precision) {
+    load_added_where_no_rope_follows_the_swing(precision, 14.0, |p| p / 2.0 + 2.0);
+}
+
+#[test]
+fn a_load_added_where_no_rope_follows_the_swing_f64() {
+    load_added_before_the_period_is_known(Precision::F64);
+    load_added_to_a_steady_swing(Precision::F64);
+}
+
+#[test]
+fn a_load_added_where_no_rope_follows_the_swing_f32() {
+    load_added_before_the_period_is_known(Precision::F32);
+    load_added_to_a_steady_swing(Precision::F32);
+}
+
+/// A long rest after a move (the field tests' other logs rest 3 s, less
+/// than the mean over one swing period needs): 10 s cycloidal moves
+/// 40° ↔ 80° and 40° ↔ 60°, every rope of [`ROPES`] and a 6.0 m one between
+/// the bank's lengths, both friction laws, 30 % and 85 % of the rated load at
+/// 40°, then 25 s at rest. No OVERLOAD (true u stays ≤ 0.85), and the
+/// estimate/true band at rest, from 1 s after the stop to the end and in its
+/// last 10 s, pooled over every case, within [1.00, 1.10] (p5, p95). The
+/// mean over one swing period (`moment_limiter::period_mean`) is the
+/// weighing for most of that rest. Before it, the last 10 s read p5 0.654
+/// (a 3 m rope stopped at 80° read 0.51–1.39 of the load) and the highest
+/// estimated u at 85 % was 0.958.
+fn long_rest_after_a_move(precision: Precision) {
+    const AT_REST_S: f64 = 25.0;
+    let mut failures = Vec::new();
+    let (mut rest, mut late) = (Vec::new(), Vec::new());
+    let mut worst: f64 = 0.0;
+    for (from, to) in [(40.0, 80.0), (80.0, 40.0), (40.0, 60.0), (60.0, 40.0)] {
+        for rope in [Rope::Thesis, Rope::Held(0.0), Rope::Held(0.25), Rope::Held(0.5), Rope::Held(1.0)] {
+            for seals in SEALS {
+                for frac in [0.3, 0.85] {
+                    let w = frac * rated_kg(40f64.to_radians());
+                    let mut p = Program::new(from, w, rope_choice(rope, f64::min(from, to))).unwrap();
+                    p.push(Segment::Hold { duration_s: HOLD_BEFORE_S }).unwrap();
+                    p.push(Segment::Luff { to_deg: to, shape: RampShape::Cycloidal, t1_s: 1.0, t2_s: 9.0, t3_s: 10.0 }).unwrap();
+                    p.push(Segment::Hold { duration_s: AT_REST_S }).unwrap();
+                    let (options, dt) = options_for_rate(RATE_HZ);
+                    let samples = simulate_program(model(), &p, &options).expect("simulation");
+                    let rows = synthesize(&samples, dt, 0.0, w, &sensors(seals, 17));
+                    let pts = replay_rows(&rows, seals, precision);
+                    let stop = HOLD_BEFORE_S + 10.0;
+                    let at_rest: Vec<f64> = pts.iter().filter(|q| q.t >= stop + 1.0 && q.state != LimiterState::Fault).map(|q| q.ratio).collect();
+                    let last: Vec<f64> = pts.iter().filter(|q| q.t >= stop + AT_REST_S - 10.0 && q.state != LimiterState::Fault).map(|q| q.ratio).collect();
+                    let peak = pts.iter().map(|q| q.ratio * q.u).fold(0.0, f64::max);
+                    let name = format!("{from:.0}->{to:.0} 10s {rope:?} {seals:?} {w:.0} kg, {AT_REST_S:.0} s at rest");
+                    let (lo, hi) = (at_rest.iter().copied().fold(f64::INFINITY, f64::min), at_rest.iter().copied().fold(0.0, f64::max));
+                    let (llo, lhi) = (last.iter().copied().fold(f64::INFINITY, f64::min), last.iter().copied().fold(0.0, f64::max));
+                    println!("{name:<66} at rest estimate/true {lo:.3}-{hi:.3}, last 10 s {llo:.3}-{lhi:.3}, peak estimated u {peak:.3}");
+                    if frac > 0.5 {
+                        worst = worst.max(peak);
+                        if let Some((t, u)) = first_overload(&pts) {
+                            failures.push(format!("{name}: OVERLOAD at {t:.2} s, true u {u:.3}"));
+                        }
+                    }
+                    rest.extend(at_rest);
+                    late.extend(last);
+                }
+            }
+        }
+    }
+    let pct = |v: &mut Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        let at = |q: f64| v.get(((v.len() - 1) as f64 * q).round() as usize).copied().unwrap_or(f64::NAN);
+        [at(0.05), at(0.5), at(0.95)]
+    };
+    let (r, l) = (pct(&mut rest), pct(&mut late));
+    println!("{precision:?}: at rest p5/p50/p95 {:.3}/{:.3}/{:.3}, its last 10 s {:.3}/{:.3}/{:.3}; highest estimated u at 85 % {worst:.3}", r[0], r[1], r[2], l[0], l[1], l[2]);
+    if !(r[0] >= 1.0 && r[2] <= 1.1) {
+        failures.push(format!("band at rest {r:?}"));
+    }
+    if !(l[0] >= 1.0 && l[2] <= 1.1) {
+        failures.push(format!("band in the last 10 s at rest {l:?}"));
+    }
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
+#[test]
+fn a_long_rest_after_a_move_f64() {
+    long_rest_after_a_move(Precision::F64);
+}
+
+#[test]
+fn a_long_rest_after_a_move_f32() {
+    long_rest_after_a_move(Precision::F32);
+}
+
 /// The estimate/true band (5th–95th percentile) in constant-velocity motion
 /// (1 s after the acceleration ramp to the deceleration ramp) and 1 s after
 /// stopping (to the end of the log), loads 30 % and 80 % of the rated load at

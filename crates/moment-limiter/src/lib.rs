@@ -59,6 +59,7 @@ pub mod io;
 pub mod load_estimate;
 pub mod load_jump;
 pub mod negative_load;
+pub mod period_mean;
 pub mod piston_force;
 pub mod sensor_lag;
 pub mod state_machine;
