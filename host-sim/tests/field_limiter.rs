@@ -984,11 +984,7 @@ fn long_rest_after_a_move(precision: Precision) {
             }
         }
     }
-    let pct = |v: &mut Vec<f64>| {
-        v.sort_by(f64::total_cmp);
-        let at = |q: f64| v.get(((v.len() - 1) as f64 * q).round() as usize).copied().unwrap_or(f64::NAN);
-        [at(0.05), at(0.5), at(0.95)]
-    };
+    let pct = |v: &mut Vec<f64>| [percentile(v, 0.05), percentile(v, 0.5), percentile(v, 0.95)];
     let (r, l) = (pct(&mut rest), pct(&mut late));
     println!("{precision:?}: at rest p5/p50/p95 {:.3}/{:.3}/{:.3}, its last 10 s {:.3}/{:.3}/{:.3}; highest estimated u at 85 % {worst:.3}", r[0], r[1], r[2], l[0], l[1], l[2]);
     if !(r[0] >= 1.0 && r[2] <= 1.1) {
