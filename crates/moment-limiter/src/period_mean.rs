@@ -94,8 +94,10 @@
 //! found again. A ratio is taken only where one period earlier the swing
 //! pulled at least the load ([`STEP_PULL`]): there a swing that decays, or
 //! that the load taken up slows, pulls less than before and the ratio reads
-//! low, never high. On a 5.5 m rope at rest 10–14 s after a raise to 80°,
-//! 110 % added is cut 1.8–2.8 s after the take-up (7.3 s or more without).
+//! low, never high. Added 14 s after a 10 s move, on ropes of 3–14.8 m that
+//! no rope of the bank follows, 110 % is cut 0.75–2.7 s after the take-up
+//! (`host-sim` test `a_load_added_where_no_rope_follows_the_swing_*`; before,
+//! never held cut in 20 s, or after 8.9 s).
 //!
 //! A gap in the readings (the chain bridges up to 1 s of them) is no
 //! reading of the force: the bins start again after it.

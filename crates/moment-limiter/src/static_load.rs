@@ -254,7 +254,7 @@
 //! otherwise it, and a load added to a steady swing read from the force's
 //! ratio to one period earlier, are floors under the bank's reading. A
 //! 110 % load added 3 s after a raise to 80° on a 6 m rope, never held cut
-//! before, is cut from 8.3 s after the take-up; added 14 s after, from 2.7 s
+//! before, is cut from 8.5 s after the take-up; added 14 s after, from 2.7 s
 //! (`host-sim` test `a_load_added_where_no_rope_follows_the_swing_*`).
 //!
 //! The cost per cycle: [`HYPOTHESES`] pendulums (one 10 ms sub-step at
