@@ -267,9 +267,21 @@ impl<T: Real> PeriodMean<T> {
         Self { sums: [T::lit(0.0); BINS + 1], bins: 0, reference: T::lit(0.0), filling: (T::lit(0.0), T::lit(0.0)), period: None, mean_n: None, confirmed: 0, confirming: None, search: None, searched_to: 0, anchor: None, step: None }
     }
 
-    /// Forgets the data (the boom moved, the force was interrupted).
+    /// Forgets the data (the boom moved, the force was interrupted). The
+    /// sums stay as they are: none is read beyond the bins counted since
+    /// the start, and clearing them every cycle of a move cost the
+    /// controller about 1 000 instructions a cycle.
     pub fn clear(&mut self) {
-        *self = Self::new();
+        self.bins = 0;
+        self.filling = (T::lit(0.0), T::lit(0.0));
+        self.period = None;
+        self.mean_n = None;
+        self.confirmed = 0;
+        self.confirming = None;
+        self.search = None;
+        self.searched_to = 0;
+        self.anchor = None;
+        self.step = None;
     }
 
     /// The mean force over one period (N), if a period was found.
