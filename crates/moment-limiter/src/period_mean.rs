@@ -400,7 +400,7 @@ impl<T: Real> PeriodMean<T> {
         // Years at rest: start again before the count could wrap.
         if self.bins >= RESTART_BINS {
             self.clear();
-            return self.push(force_n, unloaded_n, T::lit(0.0));
+            return None;
         }
         let last = self.sum(self.bins).unwrap_or(T::lit(0.0));
         self.bins += 1;
