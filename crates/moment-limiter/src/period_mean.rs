@@ -108,7 +108,7 @@
 //! prefix sums) and ends in a cycle of its own (the swing's range and the
 //! repeat test), so a search takes 16 cycles and none carries it whole; fixed
 //! loops, no heap. On the controller the heaviest cycle of a rest after a
-//! move took 17 874 instructions (48 500 with the whole search in one).
+//! move took 17 934 instructions (48 500 with the whole search in one).
 
 use crane_model::Real;
 
@@ -275,6 +275,7 @@ impl<T: Real> PeriodMean<T> {
     /// sums stay as they are: none is read beyond the bins counted since
     /// the start, and clearing them every cycle of a move cost the
     /// controller about 1 000 instructions a cycle.
+    #[inline(never)]
     pub fn clear(&mut self) {
         self.bins = 0;
         self.filling = (T::lit(0.0), T::lit(0.0));
@@ -299,6 +300,7 @@ impl<T: Real> PeriodMean<T> {
     /// set down shows here at its first bins, before the spans it enters
     /// stop being flat (a 10 % step moves a span's mean by a 35th of itself
     /// per bin on a 3.5 s period); `false` without a mean.
+    #[inline(never)]
     pub fn steady(&self, unloaded_n: T) -> bool {
         let (Some(mean), Some(p)) = (self.mean_n, self.period) else {
             return false;
