@@ -289,11 +289,6 @@ impl<T: Real> PeriodMean<T> {
         self.step = None;
     }
 
-    /// The mean force over one period (N), if a period was found.
-    pub fn mean_n(&self) -> Option<T> {
-        self.mean_n
-    }
-
     /// Whether the force still repeats at its newest bins: each of the last
     /// [`STEADY_BINS`] within [`CHANGE`] of the load's part (plus
     /// [`CHANGE_FLOOR_N`]) of the bin one period earlier. A load added or
@@ -323,7 +318,7 @@ impl<T: Real> PeriodMean<T> {
         if !self.kept(lowest, end) {
             return false;
         }
-        let w = T::from_count(u32::try_from(10 - tenths).unwrap_or(10)) * T::lit(0.1);
+        let w: T = into_bin(tenths);
         for now in end - bins..end {
             let i = now - back;
             let (Some(n0), Some(n1), Some(i0), Some(i1)) = (self.at(now), self.at(now + 1), self.at(i), self.at(i + 1)) else {
@@ -387,14 +382,10 @@ impl<T: Real> PeriodMean<T> {
         }
         let bin = self.filling.0 / self.filling.1;
         self.filling = (T::lit(0.0), T::lit(0.0));
+        // A start (bins is 0 only after `new` or `clear`, which reset the
+        // rest).
         if self.bins == 0 {
             self.reference = bin;
-            self.period = None;
-            self.mean_n = None;
-            self.confirmed = 0;
-            self.confirming = None;
-            self.search = None;
-            self.searched_to = 0;
             if let Some(s) = self.sums.first_mut() {
                 *s = T::lit(0.0);
             }
@@ -481,16 +472,13 @@ impl<T: Real> PeriodMean<T> {
             return Some(a);
         }
         let b = self.bin(i + 1)?;
-        Some(a + T::from_count(u32::try_from(10 - tenths).ok()?) * T::lit(0.1) * (b - a))
+        Some(a + into_bin::<T>(tenths) * (b - a))
     }
 
     /// The prefix sum C(i), if bin `i` is still kept.
     #[inline(never)]
     fn sum(&self, i: usize) -> Option<T> {
-        if i > self.bins || self.bins - i > BINS {
-            return None;
-        }
-        self.sums.get(i % (BINS + 1)).copied()
+        self.kept(i, i).then(|| self.at(i)).flatten()
     }
 
     /// M_P's spread over the offsets the data allow and M_P(0), for a span
@@ -512,9 +500,7 @@ impl<T: Real> PeriodMean<T> {
         if !self.kept(lowest, end) {
             return None;
         }
-        // The start of a span that ends on a bin boundary lies
-        // (10 − tenths)/10 into its bin.
-        let w = T::from_count(u32::try_from(10 - tenths).ok()?) * T::lit(0.1);
+        let w: T = into_bin(tenths);
         let (mut lo, mut hi, mut now): (Option<T>, Option<T>, Option<T>) = (None, None, None);
         for s in 0..SHIFTS {
             // Whole bins back from the last boundary, spread evenly.
@@ -647,6 +633,13 @@ impl<T: Real> PeriodMean<T> {
         }
         Some(hi? - lo?)
     }
+}
+
+/// (10 − tenths)/10: how far into its bin the point `tenths` of a bin
+/// before a bin boundary lies, the weight of the linear interpolation
+/// between the two values either side of it (prefix sums, or bins).
+fn into_bin<T: Real>(tenths: usize) -> T {
+    T::from_count(u32::try_from(10usize.saturating_sub(tenths)).unwrap_or(10)) * T::lit(0.1)
 }
 
 /// Whether spans `a` and `b` (tenths of a bin) are the same period within
