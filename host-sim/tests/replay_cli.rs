@@ -86,10 +86,14 @@ fn replay_text(content: &str) -> (Option<i32>, String, String) {
 fn malformed_logs_name_line_and_field() {
     let header = "# comment\nt_s,p1_bar,p2_bar,boom_angle_deg\n";
     let good = "0.00,60.0,5.0,50.0\n0.01,60.1,5.1,50.0\n";
-    let cases: [(String, &str); 6] = [
+    let cases: [(String, &str); 7] = [
         (
             "# comment\nt_s,p1_bar,boom_angle_deg\n0,60,50\n".into(),
             "line 2: header has no column `p2_bar`",
+        ),
+        (
+            "# comment\nT_S,P1_BAR,P2_BAR,BOOM_ANGLE_DEG\n0,60,5,50\n".into(),
+            "line 2: header has no column `t_s`, only one that differs from it in letter case",
         ),
         (
             format!("{header}{good}0.02,60.2,five,50.0\n"),

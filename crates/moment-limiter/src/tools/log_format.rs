@@ -106,6 +106,9 @@ pub enum LogErrorKind {
     Empty,
     /// The header names no such required column.
     MissingColumn(&'static str),
+    /// The header names this required column only in other letter case
+    /// (`T_S`): names are case-sensitive.
+    ColumnCase(&'static str),
     /// The header holds no comma but this separator (`;` or a tab): a
     /// spreadsheet's export in a locale that writes decimal commas.
     WrongSeparator(char),
@@ -152,6 +155,10 @@ impl fmt::Display for LogError {
         match self.kind {
             LogErrorKind::Empty => f.write_str("empty log: no header line"),
             LogErrorKind::MissingColumn(c) => write!(f, "header has no column `{c}`"),
+            LogErrorKind::ColumnCase(c) => write!(
+                f,
+                "header has no column `{c}`, only one that differs from it in letter case: column names are case-sensitive"
+            ),
             LogErrorKind::WrongSeparator(c) => write!(
                 f,
                 "header is separated by {}, not by commas: a log is comma-separated with decimal points (`{T_S},{P1_BAR},{P2_BAR},{BOOM_ANGLE_DEG}`; docs/log-format.md)",
@@ -438,7 +445,11 @@ fn parse_header(text: &str) -> Result<heapless::Vec<Column, MAX_COLUMNS>, LogErr
     }
     for required in [Column::Time, Column::P1, Column::P2, Column::Angle] {
         if !columns.contains(&required) {
-            return Err(LogErrorKind::MissingColumn(required.name()));
+            let name = required.name();
+            // `T_S` from a tool that writes headers in capitals: say so
+            // rather than only that `t_s` is missing.
+            let in_other_case = text.split(',').any(|n| n.trim().eq_ignore_ascii_case(name));
+            return Err(if in_other_case { LogErrorKind::ColumnCase(name) } else { LogErrorKind::MissingColumn(name) });
         }
     }
     Ok(columns)
@@ -530,6 +541,18 @@ mod tests {
                 line: 1,
                 kind: LogErrorKind::MissingColumn(P2_BAR)
             }
+        );
+        let e = parse_all("# c\nT_S,P1_bar,p2_bar,boom_angle_deg\n0,1,2,3\n").unwrap_err();
+        assert_eq!(
+            e,
+            LogError {
+                line: 2,
+                kind: LogErrorKind::ColumnCase(T_S)
+            }
+        );
+        assert_eq!(
+            e.to_string(),
+            "line 2: header has no column `t_s`, only one that differs from it in letter case: column names are case-sensitive"
         );
         assert_eq!(
             parse_all("").unwrap_err(),
