@@ -66,6 +66,16 @@ fn maneuver_files_run_and_bad_ones_name_the_segment() {
         let end = if f.ends_with("toml") { 45.0 } else { 70.0 };
         assert!((last[1] - end).abs() < 0.05, "{f}: ends at {}", last[1]);
     }
+    // The rest after a raise the controller's cost is measured on: 4 t held
+    // at 80° for the last 20 s, swinging on.
+    let out_path = dir.path().join("rest.csv");
+    let file = root.join("rest-after-raise.toml");
+    let out = crane_sim(&["simulate", "--maneuver", file.to_str().expect("path"), "--out", out_path.to_str().expect("path")]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let rows = csv(&out_path);
+    let last = rows.last().expect("rows");
+    assert_eq!(last[10], 4000.0);
+    assert!((last[1] - 80.0).abs() < 0.05, "ends at {}", last[1]);
     let bad = dir.path().join("bad.toml");
     std::fs::write(&bad, "start_deg = 35\n[[segment]]\nkind = \"hold\"\nduration_s = 1\n[[segment]]\nkind = \"luff\"\nto_deg = 99\nduration_s = 3\n").expect("write");
     let out = crane_sim(&["simulate", "--maneuver", bad.to_str().expect("path")]);
