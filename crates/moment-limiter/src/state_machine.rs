@@ -17,7 +17,10 @@
 //! latch also sets the warning latch, so leaving OVERLOAD passes through
 //! WARNING unless the load is already below 0.85. The utilization latches
 //! hold their value while a fault makes u unknown, so a fault cannot be used
-//! to skip the overload hysteresis.
+//! to skip the overload hysteresis. A provisional utilization
+//! ([`CycleInput::Provisional`]: a load swinging at rest that the limiter
+//! cannot weigh yet, [`crate::static_load`]) sets the latches but does not
+//! clear the overload latch.
 //!
 //! Outputs per state: NORMAL nothing; WARNING the amber lamp; OVERLOAD and
 //! FAULT lamp, alarm, and cut of boom-down and hoist-up
@@ -165,6 +168,12 @@ impl<T: Real> Latch<T> {
 pub enum CycleInput<T> {
     /// Readings were good; the utilization (W_est / W_rated).
     Utilization(T),
+    /// Readings were good, but the utilization is not yet a weighing the
+    /// limiter stands by (a load swinging at rest after a move, which no
+    /// rope of the bank follows: [`crate::static_load::StaticLoad::provisional`]).
+    /// It sets the latches as [`CycleInput::Utilization`] does and clears
+    /// the warning latch, but not the overload latch.
+    Provisional(T),
     /// Something failed this cycle.
     Fault,
 }
@@ -212,12 +221,13 @@ impl<T: Real> StateMachine<T> {
                 self.fault.active = true;
                 self.fault.held_s = None;
             }
-            CycleInput::Utilization(u) => {
+            CycleInput::Utilization(u) | CycleInput::Provisional(u) => {
                 if self.fault.active {
                     self.fault.update(true, dt_s, th.fault_recovery_s);
                 }
+                let firm = matches!(input, CycleInput::Utilization(_));
                 let o_switch = if self.overload.active {
-                    u < th.overload_exit
+                    firm && u < th.overload_exit
                 } else {
                     u >= th.overload_enter
                 };
@@ -277,6 +287,37 @@ mod tests {
         assert_eq!(run(&mut sm, 0.94, 1), LimiterState::Warning); // 0.50 s
         assert_eq!(run(&mut sm, 0.5, 30), LimiterState::Warning);
         assert_eq!(run(&mut sm, 0.5, 1), LimiterState::Normal);
+    }
+
+    #[test]
+    fn a_provisional_reading_sets_an_overload_but_does_not_clear_it() {
+        let mut sm = StateMachine::new(Thresholds::standard());
+        let mut run_p = |u: f64, n: usize| {
+            let mut s = LimiterState::Normal;
+            for _ in 0..n {
+                s = sm.update(0.01, CycleInput::Provisional(u));
+            }
+            s
+        };
+        assert_eq!(run_p(0.5, 10), LimiterState::Normal);
+        assert_eq!(run_p(1.01, 6), LimiterState::Overload);
+        // Far below the exit for 10 s: still cut.
+        assert_eq!(run_p(0.3, 1000), LimiterState::Overload);
+        // A firm reading below the exit clears it as ever (after 0.5 s),
+        // through WARNING.
+        assert_eq!(run(&mut sm, 0.3, 50), LimiterState::Overload);
+        assert_eq!(run(&mut sm, 0.3, 1), LimiterState::Warning);
+        assert_eq!(run(&mut sm, 0.3, 30), LimiterState::Normal);
+        // Without an overload, the warning comes and goes on it.
+        let mut sm = StateMachine::new(Thresholds::standard());
+        for _ in 0..6 {
+            sm.update(0.01, CycleInput::Provisional(0.92));
+        }
+        assert_eq!(sm.state(), LimiterState::Warning);
+        for _ in 0..31 {
+            sm.update(0.01, CycleInput::Provisional(0.5));
+        }
+        assert_eq!(sm.state(), LimiterState::Normal);
     }
 
     #[test]
