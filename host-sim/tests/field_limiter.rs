@@ -786,11 +786,14 @@ fn a_load_lifted_after_an_empty_hook_move_f32() {
 
 /// KNOWN GAP, measured (f64), 20° → 70° (tan θ = 2.75, the empty hook
 /// swings hard): on a 3 m rope 110 % reads 0.90 of the load 3–6 s after
-/// it left the ground (cut at +0.55 s, then WARNING); on a 6 m rope
-/// (between the bank's 5.9 m and 7.3 m) 90 % is an OVERLOAD 3.37 s after,
-/// as before the averages were raised: at the swing's crest every rope of
-/// the bank reads the load 7 % high, and W_fast, the lowest of them, is
-/// then 1.07 × the load.
+/// it left the ground (cut from +0.55 s and held: the reading, 0.99 of
+/// rated, is above the OVERLOAD's exit, and at rest after a move a reading
+/// that may follow the swing does not clear an OVERLOAD; the period's mean
+/// weighs it from +6.5 s); on a 6 m rope (between the bank's 5.9 m and
+/// 7.3 m) 90 % is an OVERLOAD 3.37 s after, for 5.25 s, as before the
+/// averages were raised: at the swing's crest every rope of the bank reads
+/// the load 7 % high, and W_fast, the lowest of them, is then 1.07 × the
+/// load.
 #[test]
 #[ignore = "KNOWN GAP: a load lifted after an empty-hook move at 70 deg: 3 m rope reads 0.90 of 110 %, 6 m rope cuts 90 % (every rope reads 7 % high at the swing's crest)"]
 fn a_load_lifted_after_an_empty_hook_move_known_gap() {
