@@ -879,7 +879,7 @@ const ADDED_WEIGHED: [(f64, f64, Rope); 3] = [
 /// the limiter cuts (OVERLOAD, or FAULT where the swing takes p1 past its
 /// range) and the estimate (×1.05) stays at or above 1/1.1 of the true load
 /// wherever it reads; and an OVERLOAD, once set, stands to the end (before
-/// `moment_limiter::static_load`'s "An overload at rest stands", 110 % on
+/// `moment_limiter::static_load`'s "At rest after a move: an overload stands", 110 % on
 /// the 3 m rope at 60° and the 6 m rope at 80°, added 3 s after the stop,
 /// was cut at +1.93 s and +4.52 s and released at the swing's lows). Printed
 /// for 90 %: the highest estimated u and the time in OVERLOAD.

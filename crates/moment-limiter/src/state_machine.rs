@@ -171,8 +171,8 @@ pub enum CycleInput<T> {
     /// Readings were good, but the utilization is not yet a weighing the
     /// limiter stands by (a load swinging at rest after a move, which no
     /// rope of the bank follows: [`crate::static_load::StaticLoad::provisional`]).
-    /// It sets the latches as [`CycleInput::Utilization`] does and clears
-    /// the warning latch, but not the overload latch.
+    /// It sets both latches as [`CycleInput::Utilization`] does and may
+    /// clear the warning latch, but never the overload latch.
     Provisional(T),
     /// Something failed this cycle.
     Fault,

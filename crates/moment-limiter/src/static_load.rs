@@ -469,7 +469,8 @@ pub struct StaticLoad<T> {
     /// Settled within [`REST_HOLD_S`] of a move, the ropes disagreeing and
     /// no mean over one swing period found: the reading may follow the
     /// swing rather than the load, so an OVERLOAD it gives is not cleared
-    /// on it (see the module doc, "An overload at rest stands").
+    /// on it (see the module doc, "At rest after a move: an overload
+    /// stands").
     pub provisional: bool,
 }
 

@@ -339,8 +339,8 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         // Stage 5.
         let input = match (&fault, &estimate) {
             // A reading at rest that may follow the swing sets an OVERLOAD
-            // but does not clear one (`crate::static_load`, "An overload at
-            // rest stands").
+            // but does not clear one (`crate::static_load`, "At rest after a
+            // move: an overload stands").
             (None, Some(e)) if e.static_load.is_some_and(|s| s.provisional) => CycleInput::Provisional(e.utilization),
             (None, Some(e)) => CycleInput::Utilization(e.utilization),
             _ => CycleInput::Fault,
