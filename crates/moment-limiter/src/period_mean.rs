@@ -233,7 +233,9 @@ pub struct PeriodMean<T> {
     reference: T,
     /// The bin being filled: ∫F dt (N·s) and its time (s).
     filling: (T, T),
-    /// The period the last search found (tenths of a bin).
+    /// The period the last search found (tenths of a bin); it changes only
+    /// when a search ends, so the search under way tries it first
+    /// ([`HINT_SPANS`]).
     period: Option<usize>,
     /// The mean the last search found, once its period is confirmed (N).
     mean_n: Option<T>,
@@ -259,8 +261,6 @@ struct Search<T> {
     /// The next candidate: the last period's neighbours, the coarse spans,
     /// then the refinement.
     next: usize,
-    /// The period the last search found (tenths of a bin), if any.
-    hint: Option<usize>,
     /// The flattest so far: (spread, span in tenths of a bin, mean).
     best: Option<(T, usize, T)>,
 }
@@ -578,15 +578,15 @@ impl<T: Real> PeriodMean<T> {
     fn search(&mut self, unloaded_n: T) {
         let mut s = match self.search {
             Some(s) => s,
-            None if self.bins > self.searched_to => Search { end: self.bins, next: 0, hint: self.period, best: None },
+            None if self.bins > self.searched_to => Search { end: self.bins, next: 0, best: None },
             None => return,
         };
-        if Self::candidate(s.next, s.best.map(|b| b.1), s.hint).is_none() {
+        if Self::candidate(s.next, s.best.map(|b| b.1), self.period).is_none() {
             self.finish(s, unloaded_n);
             return;
         }
         for _ in 0..SPANS_PER_CYCLE {
-            let Some(span) = Self::candidate(s.next, s.best.map(|b| b.1), s.hint) else {
+            let Some(span) = Self::candidate(s.next, s.best.map(|b| b.1), self.period) else {
                 break;
             };
             s.next += 1;
