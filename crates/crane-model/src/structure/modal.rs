@@ -686,3 +686,22 @@ boom_modes! {
         static_tip: [[T; 2]; M] => matrix,
     }
 }
+
+impl<T: Real, const M: usize> BoomModes<T, M> {
+    /// The tip's static compliance across the boom (m/N, body frame y) in the
+    /// retained modes: a force F across the boom at C moves C by F·Σ_k χ_Cy,k²/ω_k²
+    /// (mass-normalized modes, χᵀKχ = diag(ω²), so a static force excites each mode
+    /// by χ_Cy,k·F/ω_k²). What the model's tip gives under a swinging load's pull,
+    /// which lengthens its pendulum (`moment_limiter::held_pendulum`). A mode
+    /// without stiffness (ω = 0) adds nothing rather than infinity.
+    pub fn tip_compliance_across_m_per_n(&self) -> T {
+        let mut c = T::zero();
+        for (chi, w) in self.tip_modes[1].iter().zip(self.omega_rad_s.iter()) {
+            let w2 = *w * *w;
+            if w2 > T::zero() {
+                c += *chi * *chi / w2;
+            }
+        }
+        c
+    }
+}
