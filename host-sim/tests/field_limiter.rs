@@ -761,7 +761,7 @@ const LIFTED_AFTER_EMPTY: [(f64, f64, Rope); 6] = [
 /// 1.04 with it).
 fn load_lifted_after_an_empty_hook_move_and_weighed(precision: Precision) {
     let cases = [(20.0, 70.0, Rope::Held(0.0)), (20.0, 70.0, Rope::Held(0.5))];
-    load_added_and_weighed_by_its_period(precision, &cases, 0.0, 3.0, 2.0, true, |p| p * (1.0 + 1.0 / 3.0) + 3.0);
+    load_added_and_weighed_by_its_period(precision, &cases, 0.0, 3.0, 2.0, Checks { in_band: true, ninety_clear: false }, |p| p * (1.0 + 1.0 / 3.0) + 3.0);
 }
 
 #[test]
@@ -853,8 +853,11 @@ fn a_load_added_at_rest_after_a_move_on_a_slow_sensor() {
 /// swings drift out of phase with the true one; at 80° the load swung inward
 /// barely pulls on the cylinder): the added load is seen after 1.9–2.2 s or
 /// not within 4 s (an 110 % load then cuts only when the averages catch up),
-/// and 90 % added to the 3 m rope at 80° cuts 2.93 s after the take-up at a
-/// true 0.90 (as before this bank's rescale).
+/// and 90 % added to the 3 m rope at 80° cuts 3.16 s after the take-up at a
+/// true 0.90 (as before this bank's rescale). Since the pendulums swing
+/// longer by the boom's give at rest (`moment_limiter::static_load`), the
+/// 3 m rope at 60° with the seals' friction is seen after 0.86–0.91 s (1.88
+/// before) and cut at +0.96 s; with constant friction still after 1.88 s.
 #[test]
 #[ignore = "KNOWN GAP: a load added at rest where no rope of the bank follows the true swing (short ropes at 60-80 deg, ropes between the grid's lengths at 80 deg): seen after 1.9-2.2 s or not within 4 s"]
 fn a_load_added_at_rest_after_a_move_known_gap() {
@@ -881,18 +884,30 @@ const ADDED_WEIGHED: [(f64, f64, Rope); 3] = [
 /// wherever it reads; and an OVERLOAD, once set, stands to the end (before
 /// `moment_limiter::static_load`'s "At rest after a move: an overload stands", 110 % on
 /// the 3 m rope at 60° and the 6 m rope at 80°, added 3 s after the stop,
-/// was cut at +1.93 s and +4.52 s and released at the swing's lows). Printed
-/// for 90 %: the highest estimated u and the time in OVERLOAD.
+/// was cut at +1.93 s and +4.52 s and released at the swing's lows).
+/// Asserted for 90 %: no OVERLOAD (before the pendulums swung longer by the
+/// boom's give at rest, 90 % added 14 s after the stop on the 3 m rope at
+/// 60° was an OVERLOAD for 0.95 s at a true 0.90); printed: the highest
+/// estimated u.
 fn load_added_where_no_rope_follows_the_swing(precision: Precision, at_rest_s: f64, bound: impl Fn(f64) -> f64) {
-    load_added_and_weighed_by_its_period(precision, &ADDED_WEIGHED, 0.6, at_rest_s, 0.5, false, bound);
+    load_added_and_weighed_by_its_period(precision, &ADDED_WEIGHED, 0.6, at_rest_s, 0.5, Checks { in_band: false, ninety_clear: true }, bound);
+}
+
+/// What [`load_added_and_weighed_by_its_period`] asserts besides the cut.
+#[derive(Clone, Copy)]
+struct Checks {
+    /// For 90 % and 110 % alike every estimate from `bound(P)` on within
+    /// [1.00, 1.10] of the true load.
+    in_band: bool,
+    /// 90 % is never an OVERLOAD.
+    ninety_clear: bool,
 }
 
 /// [`load_added_where_no_rope_follows_the_swing`] for the moves and ropes
 /// `cases`, `w0_frac` of the rated load at the lower angle during the move
-/// and a take-up over `take_up_s`; with `in_band`, for 90 % and 110 % alike
-/// every estimate from `bound(P)` on within [1.00, 1.10] of the true load.
-#[allow(clippy::too_many_arguments)]
-fn load_added_and_weighed_by_its_period(precision: Precision, cases: &[(f64, f64, Rope)], w0_frac: f64, at_rest_s: f64, take_up_s: f64, in_band: bool, bound: impl Fn(f64) -> f64) {
+/// and a take-up over `take_up_s`, with the [`Checks`] `checks`.
+fn load_added_and_weighed_by_its_period(precision: Precision, cases: &[(f64, f64, Rope)], w0_frac: f64, at_rest_s: f64, take_up_s: f64, checks: Checks, bound: impl Fn(f64) -> f64) {
+    let Checks { in_band, ninety_clear } = checks;
     const AFTER_S: f64 = 20.0;
     let mut failures = Vec::new();
     for &(from, to, rope) in cases {
@@ -938,6 +953,9 @@ fn load_added_and_weighed_by_its_period(precision: Precision, cases: &[(f64, f64
                     cut.map_or("never".into(), |s| format!("{s:+.2}")),
                     first.map_or("none".into(), |f| format!("at {:+.2} s, true u {:.3}", f.0 - lifted, f.1))
                 );
+                if let (true, true, Some((t, u))) = (frac < 1.0, ninety_clear, first) {
+                    failures.push(format!("{name}: OVERLOAD at {:+.2} s, true u {u:.3}", t - lifted));
+                }
                 if frac > 1.0 {
                     // An overload at rest stands: once cut, cut to the end.
                     if let (Some((t, _)), Some(c)) = (first.filter(|f| f.0 >= lifted), cut) {
@@ -975,9 +993,10 @@ fn load_added_before_the_period_is_known(precision: Precision) {
 /// period to reach that half, the take-up, the force filter's delay and
 /// response and three bins' ratios (P/2 + 2 s). Before, 110 % on the 6.0 m
 /// and 14.8 m ropes was never held cut in the 20 s, and on the 3 m rope held
-/// cut from +8.9 s. 90 % on the 3 m rope is still cut 6.1 s after the take-up
-/// at a true 0.90: the bank's ropes read the swing's crest 1.02 of rated
-/// (1.09 before) before the mean of the new load is found.
+/// cut from +8.9 s. Now cut from +0.99 s on the 3 m rope (1.38 s before its
+/// pendulum swung longer by the boom's give at rest), +2.65 s on the 6 m
+/// and +0.75 s on the 14.8 m; 90 % on the 3 m rope, an OVERLOAD 6.1 s after
+/// the take-up at a true 0.90 before the give, reads at most u 0.993.
 fn load_added_to_a_steady_swing(precision: Precision) {
     load_added_where_no_rope_follows_the_swing(precision, 14.0, |p| p / 2.0 + 2.0);
 }
