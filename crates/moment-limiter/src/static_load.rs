@@ -226,24 +226,6 @@
 //! averages' pace as before (`host-sim` test
 //! `a_load_added_at_rest_after_a_move_known_gap`).
 //!
-//! ## At rest after a move: the boom's give
-//!
-//! A rope on the grid follows the true swing only if its period is the
-//! load's, and the loaded boom gives: the load swings as on a rope longer
-//! by c·sin²θ·g·W ([`crate::held_pendulum`], "The boom's give"; 0.1 m for
-//! 3.2 t at 60° on the COLES 930). Settled, every pendulum of the bank is
-//! lengthened by the give of the move's weighing (the load it swings with;
-//! a load added is seen within about a second, before a period off by a
-//! few per cent turns into phase). A 3 m rope stopped at 60° then keeps a
-//! consistent rope: 110 % added 14 s after the stop is cut 0.99 s after
-//! the take-up (1.38 s with rigid pendulums) and 90 % is no OVERLOAD (0.95 s
-//! of OVERLOAD at a true 0.90 before); added 3 s after, with the seals'
-//! friction 0.96 s (1.93 s; with constant friction still 1.93 s). Not in
-//! motion (see the pendulum module) and not with the reading of the moment:
-//! that follows the swing after a load is added, and with it a 110 % load
-//! lifted after an empty-hook raise to 70° on the paid-out rope read 0.897
-//! of itself 5.9 s after the lift instead of 0.916.
-//!
 //! **A load lifted after a move with the hook empty.** The averages weighed
 //! the empty hook (under [`load_jump::MIN_AVERAGE_KG`]), so there is no
 //! ratio to rescale by, and the load swings on as the hook did (the
@@ -261,6 +243,29 @@
 //! rope, between the grid's 5.9 m and 7.3 m: 7 % high), W_fast itself
 //! reads 90 % of rated as an OVERLOAD, with or without this
 //! (`a_load_lifted_after_an_empty_hook_move_known_gap`).
+//!
+//! ## At rest after a move: the boom's give
+//!
+//! A rope on the grid follows the true swing only if its period is the
+//! load's, and the loaded boom gives: the load swings as on a rope longer
+//! by c·sin²θ·g·W ([`crate::held_pendulum`], "The boom's give"; 0.1 m for
+//! 3.2 t at 60° on the COLES 930). Settled, every pendulum of the bank is
+//! lengthened by the give of the move's weighing (the load it swings with;
+//! a load added is seen within about a second, before a period off by a
+//! few per cent turns into phase). A 3 m rope stopped at 60° then keeps a
+//! consistent rope: 110 % added 14 s after the stop is cut 0.99 s after
+//! the take-up (1.38 s with rigid pendulums) and 90 % is no OVERLOAD (0.95 s
+//! of OVERLOAD at a true 0.90 before); added 3 s after, with the seals'
+//! friction 0.96 s (1.93 s; with constant friction still 1.93 s). The give
+//! is the boom's bending alone; a real crane's cylinder, pins and chassis
+//! add to it, never take from it, and on the bank's own ropes a load added
+//! at rest is seen within 1 s on a boom that gives 1 to 2.5 times the
+//! model's (rigid pendulums: a rigid boom to 1.5 times; test
+//! `a_load_added_at_rest_is_seen_on_a_boom_that_gives_up_to_twice_the_models`).
+//! Not in motion (see the pendulum module) and not with the reading of the
+//! moment: that follows the swing after a load is added, and with it a
+//! 110 % load lifted after an empty-hook raise to 70° on the paid-out rope
+//! read 0.897 of itself 5.9 s after the lift instead of 0.916.
 //!
 //! ## Settled after a move: the mean over one swing period
 //!
@@ -1032,7 +1037,16 @@ mod rest_tests {
     /// its load `w0` and from `add_at` s on `w1`. Returns (t, estimate, true
     /// load) per cycle.
     fn run(from: f64, to: f64, truth: usize, w0: f64, w1: f64, add_at: f64) -> Vec<(f64, f64, f64)> {
+        run_in(from, to, truth, w0, w1, add_at, None)
+    }
+
+    /// [`run`] with the truth its own pendulum when `world_give` is
+    /// `Some(scale)`: rigid in the move, lengthened at rest by `scale` times
+    /// the model's give under the true load (see
+    /// [`late_where_the_boom_gives`]).
+    fn run_in(from: f64, to: f64, truth: usize, w0: f64, w1: f64, add_at: f64, world_give: Option<f64>) -> Vec<(f64, f64, f64)> {
         let g = SwingGeometry::<f64>::coles_930();
+        let mut world = HeldRopes::new([HELD_LENGTHS_M[truth]], g.gravity_m_s2);
         let mut bank = StaticLoadBank::new(g);
         let dt = 0.01;
         let span = (to - from).to_radians();
@@ -1056,7 +1070,14 @@ mod rest_tests {
             th += rate * dt;
             bank.advance(th, rate, acc, dt);
             let w = if t >= add_at { w1 } else { w0 };
-            let f = bank.ropes.factor(truth).unwrap();
+            let f = match world_give {
+                None => bank.ropes.factor(truth).unwrap(),
+                Some(scale) => {
+                    world.set_give(if t >= 10.0 { scale * g.give_m(th.sin(), w) } else { 0.0 });
+                    world.update(&BoomTip::new(th.sin_cos(), g.boom_length_m, rate, acc, dt));
+                    world.factor(0).unwrap()
+                }
+            };
             let est = bank
                 .update(&LoadTerms {
                     at_rest: at_rest(),
@@ -1068,6 +1089,56 @@ mod rest_tests {
             out.push((t, est.load_kg, w));
         }
         out
+    }
+
+    /// 3 t → 4 t added 3 s after each move of
+    /// [`a_load_added_at_rest_after_a_move_is_seen_within_one_second`] on
+    /// every possible held rope, in a world whose boom gives `scale` times
+    /// the model's give at rest (the truth its own pendulum, lengthened by
+    /// `scale`·c·sin²θ·g·W of the true load): the cases (move, rope, time to
+    /// ≥ 97.5 %) not seen within 1 s.
+    fn late_where_the_boom_gives(scale: f64) -> Vec<(f64, f64, f64, Option<f64>)> {
+        let g = SwingGeometry::<f64>::coles_930();
+        let mut late = Vec::new();
+        for (from, to) in [(40.0, 60.0), (60.0, 40.0), (40.0, 80.0)] {
+            for (truth, length) in HELD_LENGTHS_M.iter().enumerate() {
+                if *length > g.tip_height_m(f64::to_radians(to)) {
+                    continue;
+                }
+                let pts = run_in(from, to, truth, 3000.0, 4000.0, 13.0, Some(scale));
+                let seen = pts.iter().find(|p| p.0 >= 13.0 && p.1 >= 3900.0).map(|p| p.0 - 13.0);
+                if seen.is_none_or(|s| s > 1.0) {
+                    late.push((from, to, *length, seen));
+                }
+            }
+        }
+        late
+    }
+
+    /// The bank lengthens its pendulums at rest by the model's give (the
+    /// boom's bending alone); a real crane's cylinder, pins and chassis give
+    /// more, never less. Asserted: a load added at rest is seen within 1 s
+    /// on a boom that gives as the model's and up to twice as much. Measured
+    /// (`..._measured`): within 1 s from 1 to 2.5 times; at 0.75 times and
+    /// on a rigid boom the 3 m rope stopped at 80° is seen after 1.9 s (the
+    /// 4.7 m one after 2.1 s rigid), at 3 times after 3.1 s. With rigid
+    /// pendulums in the bank the window was a rigid boom to 1.5 times the
+    /// model's give: at twice, the 3 m and 5.9 m ropes stopped at 80° were
+    /// seen after 3.0 s and 4.75 s (this test failed).
+    #[test]
+    fn a_load_added_at_rest_is_seen_on_a_boom_that_gives_up_to_twice_the_models() {
+        for scale in [1.0, 1.5, 2.0] {
+            let late = late_where_the_boom_gives(scale);
+            assert!(late.is_empty(), "give x{scale}: {late:?}");
+        }
+    }
+
+    #[test]
+    #[ignore = "measurement: a load added at rest against how much the boom gives"]
+    fn a_load_added_at_rest_against_the_booms_give_measured() {
+        for scale in [0.0, 0.5, 0.75, 1.0, 1.5, 2.0, 2.5, 3.0, 4.0] {
+            println!("boom giving {scale} times the model's: not seen within 1 s {:?}", late_where_the_boom_gives(scale));
+        }
     }
 
     #[test]
