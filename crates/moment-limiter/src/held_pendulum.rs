@@ -243,6 +243,11 @@ impl<T: Real, const N: usize> HeldRopes<T, N> {
         self.give_m = if give_m.is_finite() && give_m > T::lit(0.0) { give_m } else { T::lit(0.0) };
     }
 
+    /// How much longer than its rope each pendulum swings now (m).
+    pub fn give_m(&self) -> T {
+        self.give_m
+    }
+
     /// The hanging length of rope `i` (m); `None` past the last rope.
     pub fn length_m(&self, i: usize) -> Option<T> {
         self.length_m.get(i).copied()

@@ -113,7 +113,7 @@
 //! swing's range and the repeat test), so a search takes 18 cycles and none
 //! carries it whole; fixed
 //! loops, no heap. On the controller the heaviest cycle of a rest after a
-//! move took 13 416 instructions (the 20 s rest of
+//! move took 13 410 instructions (the 20 s rest of
 //! `examples/maneuvers/rest-after-raise.toml`; 48 500 with the whole search
 //! in one).
 

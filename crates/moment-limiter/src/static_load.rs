@@ -455,12 +455,10 @@ pub struct StaticLoadBank<T> {
     moving_s: T,
     /// How long the boom has been still (s).
     still_s: T,
-    /// The last load reported in motion (kg): the move's weighing.
+    /// The last load reported in motion (kg): the move's weighing, whose
+    /// give lengthens the pendulums at rest (see "At rest after a move: the
+    /// boom's give" in the module doc).
     last_kg: Option<T>,
-    /// How much longer than their ropes the pendulums swing now (m): the
-    /// boom's give under the move's weighing, at rest (see "At rest after a
-    /// move: the boom's give" in the module doc).
-    give_m: T,
     /// The move's weighing held at rest (kg); see [`REST_HOLD_S`].
     hold_kg: Option<T>,
     /// W_slow of the last cycle (kg), where averages that start begin.
@@ -523,7 +521,6 @@ impl<T: Real> StaticLoadBank<T> {
             moving_s: T::lit(0.0),
             still_s: T::lit(0.0),
             last_kg: None,
-            give_m: T::lit(0.0),
             hold_kg: None,
             slow_kg: None,
             follow_s: T::lit(0.0),
@@ -589,7 +586,6 @@ impl<T: Real> StaticLoadBank<T> {
             _ => T::lit(0.0),
         };
         self.ropes.set_give(give);
-        self.give_m = give;
         self.ropes.update(&tip);
         self.paid_out.update(&tip, self.geometry.paid_out_length_m(angle_rad) + give);
         self.dt_s = if dt_s.is_finite() && dt_s > T::lit(0.0) {
@@ -643,7 +639,7 @@ impl<T: Real> StaticLoadBank<T> {
         let tan_angle = s / c;
         LedFactors {
             held: self.ropes.led_factors(self.lead_s, tan_angle),
-            paid_out: self.paid_out.led_factor(self.geometry.paid_out_length_m(angle_rad) + self.give_m, self.lead_s, tan_angle),
+            paid_out: self.paid_out.led_factor(self.geometry.paid_out_length_m(angle_rad) + self.ropes.give_m(), self.lead_s, tan_angle),
         }
     }
 

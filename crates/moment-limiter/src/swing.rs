@@ -97,8 +97,7 @@ impl<T: Real> SwingGeometry<T> {
     /// it and again the horizontal part of the tip's move. No load or a
     /// non-finite one gives nothing; at most [`MAX_GIVE_M`].
     pub fn give_m(&self, sin_angle: T, load_kg: T) -> T {
-        let sin = sin_angle;
-        let give = self.tip_compliance_m_per_n * sin * sin * self.gravity_m_s2 * load_kg;
+        let give = self.tip_compliance_m_per_n * sin_angle * sin_angle * self.gravity_m_s2 * load_kg;
         if give.is_finite() && give > T::lit(0.0) {
             give.min(T::lit(MAX_GIVE_M))
         } else {
