@@ -12,12 +12,21 @@ mod common;
 use common::model;
 use crane_model::data::profile::RampShape;
 use crane_model::multibody::rope::RopeChoice;
-use crane_model::sim::simulation::Maneuver;
+use crane_model::sim::simulation::{Maneuver, Sample};
 use host_sim::synth_core::{options_for_rate, simulate};
 use moment_limiter::held_pendulum::{BoomTip, HeldRopes, PaidOutRope};
 use moment_limiter::swing::SwingGeometry;
 
 const RATE_HZ: f64 = 100.0;
+
+/// The tip's motion at sample `s` between `prev` and `next`, `dt` apart:
+/// central differences of the rigid boom angle, as exact as the samples
+/// allow (the limiter's come from the filtered sensor).
+fn tip_at(geometry: &SwingGeometry<f64>, (prev, s, next): (&Sample<f64>, &Sample<f64>, &Sample<f64>), dt: f64) -> BoomTip<f64> {
+    let rate = (next.boom_angle_rad - prev.boom_angle_rad) / (2.0 * dt);
+    let accel = (next.boom_angle_rad - 2.0 * s.boom_angle_rad + prev.boom_angle_rad) / (dt * dt);
+    BoomTip::new(s.boom_angle_rad.sin_cos(), geometry.boom_length_m, rate, accel, dt)
+}
 
 /// How far the limiter's pendulum strays from the model's swing over a
 /// move and the rest after it: (largest |φ − φ_model| in degrees, largest
@@ -34,11 +43,7 @@ fn agreement(maneuver: &Maneuver, held_length_m: Option<f64>) -> (f64, f64, f64,
     let weight = samples.first().map(|s| s.rope_tension_n).expect("samples");
     for k in 1..samples.len() - 1 {
         let (prev, s, next) = (&samples[k - 1], &samples[k], &samples[k + 1]);
-        // Central differences of the rigid boom angle, as exact as the
-        // samples allow (the limiter's come from the filtered sensor).
-        let rate = (next.boom_angle_rad - prev.boom_angle_rad) / (2.0 * dt);
-        let accel = (next.boom_angle_rad - 2.0 * s.boom_angle_rad + prev.boom_angle_rad) / (dt * dt);
-        let tip = BoomTip::new(s.boom_angle_rad.sin_cos(), geometry.boom_length_m, rate, accel, dt);
+        let tip = tip_at(&geometry, (prev, s, next), dt);
         let (phi, tension) = match held_length_m {
             None => {
                 paid_out.update(&tip, geometry.paid_out_length_m(s.boom_angle_rad));
@@ -128,11 +133,9 @@ fn swing_error_at_rest(maneuver: &Maneuver, length_m: f64, give_load_kg: f64) ->
     let (mut first, mut last, mut largest) = (0.0f64, 0.0f64, 0.0f64);
     for k in 1..samples.len() - 1 {
         let (prev, s, next) = (&samples[k - 1], &samples[k], &samples[k + 1]);
-        let rate = (next.boom_angle_rad - prev.boom_angle_rad) / (2.0 * dt);
-        let accel = (next.boom_angle_rad - 2.0 * s.boom_angle_rad + prev.boom_angle_rad) / (dt * dt);
         let at_rest = s.t_s >= stop;
         held.set_give(if at_rest { geometry.give_m(s.boom_angle_rad.sin(), give_load_kg) } else { 0.0 });
-        held.update(&BoomTip::new(s.boom_angle_rad.sin_cos(), geometry.boom_length_m, rate, accel, dt));
+        held.update(&tip_at(&geometry, (prev, s, next), dt));
         if at_rest {
             let error = (held.tan_swing(0).expect("one rope").atan() - s.swing_rad).abs().to_degrees();
             if s.t_s < stop + period {
