@@ -264,6 +264,16 @@ impl<T: Real, const N: usize> HeldRopes<T, N> {
         self.factor.get(i).copied()
     }
 
+    /// Every load hanging still; the next [`Self::update`] starts from
+    /// there (its first sub-step reads sin φ = 0; cos φ and the factor it
+    /// sets anew).
+    pub fn still(&mut self) {
+        let zero = T::lit(0.0);
+        self.phi = [zero; N];
+        self.phi_dot = [zero; N];
+        self.sin_phi = [zero; N];
+    }
+
     /// Advances every rope by the boom tip's motion over one update
     /// ([`BoomTip`]).
     pub fn update(&mut self, tip: &BoomTip<T>) {
@@ -340,6 +350,11 @@ impl<T: Real> PaidOutRope<T> {
     /// tan φ now.
     pub fn tan_swing(&self) -> T {
         self.sin_phi / self.cos_phi
+    }
+
+    /// The load hanging still, as [`HeldRopes::still`].
+    pub fn still(&mut self) {
+        (self.phi, self.phi_dot, self.sin_phi) = (T::lit(0.0), T::lit(0.0), T::lit(0.0));
     }
 
     /// The factor of the rope's pull on the cylinder now.

@@ -300,6 +300,33 @@
 //! false OVERLOAD at a crest lasts that much longer (90 % lifted on a 6 m
 //! rope after an empty-hook raise to 70°: 5.3 s instead of 2.9 s).
 //!
+//! ## A load set down: the ropes hang still again
+//!
+//! The pendulums are undamped, which is right while a load hangs: it swings
+//! on. A load set on the ground swings no more, and one lifted from it
+//! leaves the ground hanging still under the tip. The bank kept the swings
+//! of every move before, and over a working shift (a load lifted at 40°,
+//! raised to 70°, lowered, set down, again and again) each cycle's moves
+//! added their swings to the last ones': the highest reading of a cycle at
+//! a true u of 0.60 ranged 0.59–0.91, a cycle read 0.60 of its load at rest
+//! at 70°, and after four cycles a 110 % load lifted at 40° was cut 7.6 s
+//! after it left the ground and read 0.83 of itself (after 24 h in f32 it
+//! was never cut; `host-sim` test `a_shift_of_work_*`). So once the boom
+//! has been still for [`EMPTY_HOOK_S`] with the force under an empty
+//! hook's, F − F_0 < F_W'·[`load_jump::MIN_AVERAGE_KG`] (the load at factor
+//! 1 under 500 kg), every rope hangs still and the bank weighs as after
+//! power-up: the ropes agree, the averages follow W_fast, nothing is held
+//! and no period's mean runs, so the next lift-off is weighed as the first
+//! (now the same sample after 24 h as switched on, 0.77 s after it leaves
+//! the ground). A swinging load never reads that light for that long: its
+//! pull dips under an empty hook's for less than half a period (4.7 s at
+//! 22 m), and on the bank's own ropes at 60° and 80°, 3 t for 1.2 s at most
+//! (test `a_swinging_load_is_never_taken_for_an_empty_hook`). An empty
+//! hook's swing pulls nothing on the cylinder, so nothing is lost while it
+//! is empty. A load hung on a hook that still swings (the simulator's lift
+//! after an empty-hook move, whose load inherits the hook's swing) within
+//! [`EMPTY_HOOK_S`] of the stop is followed as before.
+//!
 //! The cost per cycle: [`HYPOTHESES`] pendulums (one 10 ms sub-step at
 //! 100 Hz each), as many solutions of a quadratic, four filter stages and
 //! one division (the ratio ρ_k); at rest after a move as many factors of
@@ -388,6 +415,13 @@ pub const UNUSABLE_SPREAD: f64 = 0.25;
 /// (s): a flicker of the rate at rest is no move.
 pub const MOVE_FOR_HOLD_S: f64 = 1.0;
 
+/// How long the boom must be still and the hook light (the force at factor
+/// 1 under [`load_jump::MIN_AVERAGE_KG`]) before the ropes hang still again
+/// and the bank weighs as after power-up (s; see the module doc, "A load
+/// set down"): longer than half the longest rope's period (4.7 s at 22 m),
+/// the longest a swinging load's pull can stay that low.
+pub const EMPTY_HOOK_S: f64 = 6.0;
+
 /// Smallest factor 1 + h·a_Ly/g + tan θ·tan φ at which a hypothesis weighs
 /// the load (below it, it is left out of W_fast; see the module doc).
 pub const MIN_LOAD_FACTOR: f64 = 0.5;
@@ -471,6 +505,9 @@ pub struct StaticLoadBank<T> {
     /// The move that ended carried (nearly) no load: its last weighing was
     /// under [`load_jump::MIN_AVERAGE_KG`] (see the module doc).
     light_at_stop: bool,
+    /// How long the boom has been still with the force reading a light hook
+    /// at factor 1 (s; see [`EMPTY_HOOK_S`]).
+    light_s: T,
     /// The angle sensor's lag (s), by which the force without it leads the
     /// pendulums (see the module doc).
     lead_s: T,
@@ -526,6 +563,7 @@ impl<T: Real> StaticLoadBank<T> {
             follow_s: T::lit(0.0),
             after_move: false,
             light_at_stop: false,
+            light_s: T::lit(0.0),
             lead_s: T::lit(0.0),
             period_mean: PeriodMean::new(),
             advanced_s: T::lit(0.0),
@@ -576,6 +614,14 @@ impl<T: Real> StaticLoadBank<T> {
         } else {
             (T::lit(0.0), T::lit(0.0))
         };
+        // An empty hook swings no load: after EMPTY_HOOK_S of a still boom
+        // and a light hook the ropes hang still, as at power-up (see the
+        // module doc).
+        if self.moved && self.light_s >= T::lit(EMPTY_HOOK_S) {
+            self.moved = false;
+            self.ropes.still();
+            self.paid_out.still();
+        }
         let trig = angle_rad.sin_cos_own();
         let tip = BoomTip::new(trig, self.geometry.boom_length_m, drive_rate, drive_accel, dt_s);
         // At rest the loaded pendulums swing longer by the boom's give (see
@@ -727,6 +773,10 @@ impl<T: Real> StaticLoadBank<T> {
     /// The load of this cycle (after [`advance`](Self::advance)); `None` when
     /// the force gives no load on the model's rising branch (not observable).
     pub fn update(&mut self, terms: &LoadTerms<T>) -> Option<StaticLoad<T>> {
+        // How long the hook has read empty with the boom still: the next
+        // advance stills the ropes after EMPTY_HOOK_S (see the module doc).
+        let light = self.still && terms.force_n - terms.at_rest.at_zero < terms.at_rest.per_kg * T::lit(load_jump::MIN_AVERAGE_KG);
+        self.light_s = if light { self.light_s + self.dt_s } else { T::lit(0.0) };
         let tip_height = self.geometry.tip_height_m(terms.angle_rad);
         // Gains 1 − e^(−dt/τ) of the slow stages, the fast ones (W_fast's
         // and each hypothesis's S_k) and the inconsistency's.
@@ -1172,5 +1222,81 @@ mod rest_tests {
             }
         }
         assert!(late.is_empty(), "{late:?}");
+    }
+
+    /// Per cycle: time (s), estimate (kg), true load (kg), force (N).
+    type Trace = Vec<(f64, f64, f64, f64)>;
+
+    /// A raise from 40° to `to` degrees with `w0` kg on held rope `truth`
+    /// of the bank (the truth its own pendulum), then at rest: `set_down`
+    /// s after the start the load lands (the force of an empty hook; a load
+    /// on the ground swings no more), and from `lift` s on `w1` kg hangs
+    /// still under the tip. Returns the bank and its [`Trace`].
+    fn set_down_and_lift(to: f64, truth: usize, w0: f64, set_down: f64, lift: f64, w1: f64) -> (StaticLoadBank<f64>, Trace) {
+        let g = SwingGeometry::<f64>::coles_930();
+        let mut world = HeldRopes::new([HELD_LENGTHS_M[truth]], g.gravity_m_s2);
+        let mut bank = StaticLoadBank::new(g);
+        let dt = 0.01;
+        let rate_max = (to - 40.0f64).to_radians() / 9.0;
+        let (mut th, mut rate) = (40f64.to_radians(), 0.0);
+        let mut out = Vec::new();
+        for k in 0..6000 {
+            let t = f64::from(k) * dt;
+            let acc = if (1.0..2.0).contains(&t) { rate_max } else if (9.0..10.0).contains(&t) { -rate_max } else { 0.0 };
+            rate = if t >= 10.0 { 0.0 } else { rate + acc * dt };
+            th += rate * dt;
+            bank.advance(th, rate, acc, dt);
+            world.update(&BoomTip::new(th.sin_cos(), g.boom_length_m, rate, acc, dt));
+            let (w, f) = if t < set_down { (w0, world.factor(0).unwrap()) } else if t < lift { (0.0, 1.0) } else { (w1, 1.0) };
+            let terms = LoadTerms { at_rest: at_rest(), force_n: 100_000.0 + 10.0 * w * f, force_still_n: None, angle_rad: th };
+            out.push((t, bank.update(&terms).unwrap().load_kg, w, terms.force_n));
+        }
+        (bank, out)
+    }
+
+    /// A load set down at rest and another lifted: once the hook has been
+    /// empty for [`EMPTY_HOOK_S`], every rope of the bank hangs still, and a
+    /// load lifted then is weighed as at power-up, within [0.98, 1.02] of
+    /// itself 1 s after it is taken up (0.988–1.000), on every rope. Before,
+    /// the ropes swung on from the move, and the lift on the 3 m rope after
+    /// a raise to 60° read 0.839 of itself.
+    #[test]
+    fn a_load_set_down_stops_the_ropes_swinging() {
+        for to in [60.0, 80.0] {
+            for truth in 0..HELD_LENGTHS_M.len() {
+                let (bank, out) = set_down_and_lift(to, truth, 3000.0, 20.0, 30.0, 4000.0);
+                for i in 0..HELD_LENGTHS_M.len() {
+                    assert_eq!(bank.ropes.tan_swing(i), Some(0.0), "to {to}, truth {truth}: rope {i} swings");
+                }
+                assert_eq!(bank.paid_out.tan_swing(), 0.0);
+                let late = out.iter().filter(|q| q.0 >= 31.0);
+                let (lo, hi) = late.fold((f64::INFINITY, 0.0f64), |(lo, hi), &(_, e, w, _)| (lo.min(e / w), hi.max(e / w)));
+                assert!(lo >= 0.98 && hi <= 1.02, "to {to}, truth {truth}: estimate/true {lo:.3}..{hi:.3} from 1 s after the lift");
+            }
+        }
+    }
+
+    /// A load that swings at rest is never taken for an empty hook, however
+    /// low its pull dips: 3 t on every rope of the bank, 50 s at rest after
+    /// a raise to 60° or 80° (at 80° the 3 m rope swings 15°, and its pull
+    /// on the cylinder nearly vanishes twice a period): the bank's ropes
+    /// swing on to the end, and the longest the pull stays under an empty
+    /// hook's is under half of [`EMPTY_HOOK_S`].
+    #[test]
+    fn a_swinging_load_is_never_taken_for_an_empty_hook() {
+        let light_n = 100_000.0 + 10.0 * load_jump::MIN_AVERAGE_KG;
+        let mut longest = 0.0f64;
+        for to in [60.0, 80.0] {
+            for truth in 0..HELD_LENGTHS_M.len() {
+                let (bank, out) = set_down_and_lift(to, truth, 3000.0, f64::INFINITY, f64::INFINITY, 0.0);
+                assert!(bank.moved, "to {to}, truth {truth}: the ropes were stilled");
+                let mut run = 0.0f64;
+                for &(t, _, _, force) in &out {
+                    run = if t >= 10.0 && force < light_n { run + 0.01 } else { 0.0 };
+                    longest = longest.max(run);
+                }
+            }
+        }
+        assert!(longest > 0.0 && longest < EMPTY_HOOK_S / 2.0, "the pull stayed under an empty hook's for {longest:.2} s");
     }
 }
