@@ -701,7 +701,7 @@ fn load_added_at_rest_after_a_move(precision: Precision, cases: &[(f64, f64, Rop
 }
 
 /// A load lifted after a move with the hook empty (a 10 s cycloidal move,
-/// 3 s at rest, then 110 % or 90 % of the rated load taken up over 2 s):
+/// `at_rest_s` at rest, then 110 % or 90 % of the rated load taken up over 2 s):
 /// the load swings on as the empty hook did, and the rope bank's averages,
 /// which weighed the empty hook, start from nothing. 3–6 s after the load
 /// leaves the ground the estimate (×1.05) is at least 1/1.1 of the true
@@ -712,18 +712,17 @@ fn load_added_at_rest_after_a_move(precision: Precision, cases: &[(f64, f64, Rop
 /// 40° → 56°). How soon the 110 % load is cut is printed, not asserted
 /// (0.56–2.34 s here): the bank's minimum over the ropes reads the load low
 /// while their swings spread (see the module doc).
-fn load_lifted_after_an_empty_hook_move(precision: Precision, cases: &[(f64, f64, Rope)]) {
+fn load_lifted_after_an_empty_hook_move(precision: Precision, cases: &[(f64, f64, Rope)], at_rest_s: f64) {
     const TAKE_UP_S: f64 = 2.0;
-    const AT_REST_S: f64 = 3.0;
     let mut failures = Vec::new();
     for &(from, to, rope) in cases {
         for seals in SEALS {
             for frac in [0.9, 1.1] {
                 let w = frac * rated_kg(to.to_radians());
                 let name = format!("{from:.0}->{to:.0} 10s {rope:?} {seals:?}: empty, then {w:.0} kg lifted at rest");
-                let rows = lift_after_a_move(from, to, rope, seals, 0.0, AT_REST_S, TAKE_UP_S, w, 7.0);
+                let rows = lift_after_a_move(from, to, rope, seals, 0.0, at_rest_s, TAKE_UP_S, w, 7.0);
                 let pts = replay_rows(&rows, seals, precision);
-                let lifted = HOLD_BEFORE_S + 10.0 + AT_REST_S + TAKE_UP_S;
+                let lifted = HOLD_BEFORE_S + 10.0 + at_rest_s + TAKE_UP_S;
                 let low = pts.iter().filter(|q| q.t >= lifted + 3.0 && q.t <= lifted + 6.0).map(|q| q.ratio).fold(f64::INFINITY, f64::min);
                 let first = first_overload(&pts);
                 println!(
@@ -781,12 +780,12 @@ fn a_load_lifted_after_an_empty_hook_move_is_weighed_by_its_period_f32() {
 
 #[test]
 fn a_load_lifted_after_an_empty_hook_move_f64() {
-    load_lifted_after_an_empty_hook_move(Precision::F64, &LIFTED_AFTER_EMPTY);
+    load_lifted_after_an_empty_hook_move(Precision::F64, &LIFTED_AFTER_EMPTY, 3.0);
 }
 
 #[test]
 fn a_load_lifted_after_an_empty_hook_move_f32() {
-    load_lifted_after_an_empty_hook_move(Precision::F32, &LIFTED_AFTER_EMPTY);
+    load_lifted_after_an_empty_hook_move(Precision::F32, &LIFTED_AFTER_EMPTY, 3.0);
 }
 
 /// KNOWN GAP, measured (f64), 20° → 70° (tan θ = 2.75, the empty hook
@@ -802,7 +801,23 @@ fn a_load_lifted_after_an_empty_hook_move_f32() {
 #[test]
 #[ignore = "KNOWN GAP: a load lifted after an empty-hook move at 70 deg: 3 m rope reads 0.90 of 110 %, 6 m rope cuts 90 % (every rope reads 7 % high at the swing's crest)"]
 fn a_load_lifted_after_an_empty_hook_move_known_gap() {
-    load_lifted_after_an_empty_hook_move(Precision::F64, &[(20.0, 70.0, Rope::Held(0.0)), (20.0, 70.0, Rope::Held(0.5))]);
+    load_lifted_after_an_empty_hook_move(Precision::F64, &[(20.0, 70.0, Rope::Held(0.0)), (20.0, 70.0, Rope::Held(0.5))], 3.0);
+}
+
+/// KNOWN GAP, measured (f64): the same with 12 s at rest, the simulator's
+/// lifted load inheriting the swing the empty hook still has (its hook is
+/// massless and undamped; a real load leaves the ground hanging still, and
+/// after [`moment_limiter::static_load::EMPTY_HOOK_S`] with the hook empty
+/// the bank takes it so). The ropes hang still, the load swings, and the
+/// swing's crests read as load: 90 % is an OVERLOAD in 12 of the 12 cases,
+/// 0.24–5.86 s after it leaves the ground; 110 % is cut from −0.05 to
+/// +0.96 s. Before the ropes were stilled, 110 % after the thesis rope's
+/// 20° → 70° read 0.74 of itself and was never cut, and after 40° → 56°
+/// was cut only after 3.26–4.00 s; 90 % was no OVERLOAD.
+#[test]
+#[ignore = "KNOWN GAP: a load lifted 12 s after an empty-hook move, inheriting the hook's swing (the simulator's massless hook): 90 % is an OVERLOAD (the crests)"]
+fn a_load_lifted_long_after_an_empty_hook_move_known_gap() {
+    load_lifted_after_an_empty_hook_move(Precision::F64, &LIFTED_AFTER_EMPTY, 12.0);
 }
 
 /// The moves and ropes where the bank sees a load added at rest within 1 s
