@@ -11,7 +11,10 @@
 //!   `p2_bar` and `boom_angle_deg`, in any order; `true_load_kg` is optional;
 //!   other columns are allowed and ignored. Names are case-sensitive.
 //! - Each data row has exactly as many fields as the header. Fields are
-//!   decimal numbers (surrounding spaces allowed). `t_s` must be finite and
+//!   decimal numbers (surrounding spaces allowed). A field or column name
+//!   may be wrapped in double quotes, as spreadsheets and CSV writers quote
+//!   (`"t_s","p1_bar"`); a quoted field holds no comma (a log's numbers
+//!   have decimal points). `t_s` must be finite and
 //!   never decrease. A sensor value written as `NaN` or `inf` is read as such
 //!   and becomes a sensor FAULT in the limiter, like any out-of-range value;
 //!   text that is not a number is a format error. `true_load_kg` may be empty.
@@ -122,6 +125,9 @@ pub enum LogErrorKind {
     MissingField(&'static str),
     /// The row has more fields than the header.
     TooManyFields,
+    /// The row has more fields than the header, and every one too many is
+    /// empty: the row ends with a comma.
+    TrailingComma,
     /// This field is empty.
     EmptyField(&'static str),
     /// This field is not a number.
@@ -172,6 +178,9 @@ impl fmt::Display for LogError {
             LogErrorKind::TooManyColumns => write!(f, "header has more than {MAX_COLUMNS} columns"),
             LogErrorKind::MissingField(c) => write!(f, "field `{c}` missing (row too short)"),
             LogErrorKind::TooManyFields => f.write_str("more fields than the header has columns"),
+            LogErrorKind::TrailingComma => f.write_str(
+                "more fields than the header has columns: the row ends with a comma (the header does not)",
+            ),
             LogErrorKind::EmptyField(c) => write!(f, "field `{c}` is empty"),
             LogErrorKind::NotANumber(c) => write!(f, "field `{c}` is not a number"),
             LogErrorKind::TimeNotFinite => write!(f, "field `{T_S}` is not a finite time"),
@@ -274,10 +283,11 @@ impl<T: Real> LogParser<T> {
         let mut values: [Option<T>; 5] = [None; 5];
         let mut time_us = None;
         for &column in columns.iter() {
-            let field = fields
-                .next()
-                .ok_or(err(LogErrorKind::MissingField(column.name())))?
-                .trim();
+            let field = unquote(
+                fields
+                    .next()
+                    .ok_or(err(LogErrorKind::MissingField(column.name())))?,
+            );
             let slot = match column {
                 Column::Time => values.get_mut(0),
                 Column::P1 => values.get_mut(1),
@@ -301,8 +311,9 @@ impl<T: Real> LogParser<T> {
                 *slot = Some(T::lit(v));
             }
         }
-        if fields.next().is_some() {
-            return Err(err(LogErrorKind::TooManyFields));
+        if let Some(extra) = fields.next() {
+            let trailing = extra.trim().is_empty() && fields.all(|f| f.trim().is_empty());
+            return Err(err(if trailing { LogErrorKind::TrailingComma } else { LogErrorKind::TooManyFields }));
         }
         let missing = |name| err(LogErrorKind::MissingField(name));
         let [_, p1, p2, angle, true_load] = values;
@@ -421,6 +432,16 @@ pub fn parse_time_us(text: &str) -> Result<i64, LogErrorKind> {
     Ok(if negative { -us } else { us })
 }
 
+/// A field without its surrounding spaces and, if it is wrapped in double
+/// quotes, without them (and the spaces inside).
+fn unquote(field: &str) -> &str {
+    let field = field.trim();
+    field
+        .strip_prefix('"')
+        .and_then(|f| f.strip_suffix('"'))
+        .map_or(field, str::trim)
+}
+
 fn parse_header(text: &str) -> Result<heapless::Vec<Column, MAX_COLUMNS>, LogErrorKind> {
     // A spreadsheet saved in a locale with decimal commas separates with `;`
     // (or tabs): say so rather than that `t_s` is missing.
@@ -431,7 +452,7 @@ fn parse_header(text: &str) -> Result<heapless::Vec<Column, MAX_COLUMNS>, LogErr
     }
     let mut columns = heapless::Vec::new();
     for name in text.split(',') {
-        let name = name.trim();
+        let name = unquote(name);
         if name.parse::<f64>().is_ok() {
             return Err(LogErrorKind::NoHeader);
         }
@@ -448,7 +469,7 @@ fn parse_header(text: &str) -> Result<heapless::Vec<Column, MAX_COLUMNS>, LogErr
             let name = required.name();
             // `T_S` from a tool that writes headers in capitals: say so
             // rather than only that `t_s` is missing.
-            let in_other_case = text.split(',').any(|n| n.trim().eq_ignore_ascii_case(name));
+            let in_other_case = text.split(',').any(|n| unquote(n).eq_ignore_ascii_case(name));
             return Err(if in_other_case { LogErrorKind::ColumnCase(name) } else { LogErrorKind::MissingColumn(name) });
         }
     }
@@ -484,6 +505,27 @@ mod tests {
             parse_all("t_s,p1_bar,p2_bar,boom_angle_deg,note;x\n0,1,2,45,3\n").map(|r| r.len()),
             Ok(1)
         );
+    }
+
+    #[test]
+    fn quoted_names_and_fields_are_read_without_their_quotes() {
+        let r = parse_all("\"t_s\",\"p1_bar\", \" p2_bar \",boom_angle_deg,\"true_load_kg\"\n\"0.01\",\"60\",5, \"45.5\" ,\"\"\n").unwrap();
+        assert_eq!(r.len(), 1);
+        assert_eq!(
+            r[0].frame,
+            Frame {
+                t: Ticks(10_000),
+                p1_bar: 60.0,
+                p2_bar: 5.0,
+                boom_angle_deg: 45.5
+            }
+        );
+        assert_eq!(r[0].true_load_kg, None);
+        // Quotes do not make text a number, nor a decimal comma a point.
+        let e = parse_all("t_s,p1_bar,p2_bar,boom_angle_deg\n0,\"6,0\",5,45\n").unwrap_err();
+        assert_eq!(e.kind, LogErrorKind::NotANumber(P1_BAR));
+        let e = parse_all("\"T_S\",p1_bar,p2_bar,boom_angle_deg\n0,1,2,3\n").unwrap_err();
+        assert_eq!(e.kind, LogErrorKind::ColumnCase(T_S));
     }
 
     #[test]
@@ -574,6 +616,13 @@ mod tests {
             LogErrorKind::NoHeader
         );
         let e = parse_all(&format!("{h}0,1,2,3,4,5\n")).unwrap_err();
+        assert_eq!(e.kind, LogErrorKind::TooManyFields);
+        let e = parse_all(&format!("{h}0,1,2,3,4,\n")).unwrap_err();
+        assert_eq!((e.line, e.kind), (2, LogErrorKind::TrailingComma));
+        assert!(e.to_string().contains("ends with a comma"), "{e}");
+        let e = parse_all(&format!("{h}0,1,2,3,4, ,\n")).unwrap_err();
+        assert_eq!(e.kind, LogErrorKind::TrailingComma);
+        let e = parse_all(&format!("{h}0,1,2,3,4,,5\n")).unwrap_err();
         assert_eq!(e.kind, LogErrorKind::TooManyFields);
         let e = parse_all(&format!("{h}0,,2,3,4\n")).unwrap_err();
         assert_eq!(e.kind, LogErrorKind::EmptyField(P1_BAR));
