@@ -30,11 +30,13 @@ pub enum Command {
     /// Boom mass, natural frequencies and kinds of the boom's modes.
     Modes(cmd::modes::ModesArgs),
     /// Simulate one boom maneuver: a thesis case, any luffing move, a lift-off or a maneuver file.
+    #[command(allow_negative_numbers = true)]
     Simulate(cmd::simulate::SimulateArgs),
     /// Lifting capacity chart: tipping and rated load against radius.
+    #[command(allow_negative_numbers = true)]
     Chart(cmd::chart::ChartArgs),
     /// Make a recorded-style sensor log of a simulated maneuver.
-    #[command(after_help = "The log format is in docs/log-format.md.")]
+    #[command(allow_negative_numbers = true, after_help = "The log format is in docs/log-format.md.")]
     Synth(cmd::synth::SynthArgs),
     /// Learn cylinder friction and sensor offsets from unloaded up/down logs.
     #[command(after_help = "The log format is in docs/log-format.md; the file written, key by key, in docs/calibration.md.")]

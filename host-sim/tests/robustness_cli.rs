@@ -476,6 +476,47 @@ fn usage_errors_exit_1_help_and_version_exit_0() {
     assert!(text(&out.stderr).contains("50 ms"), "{}", text(&out.stderr));
 }
 
+/// A negative number is the value of its option, not an unknown flag: the
+/// command's own check names what is wrong with it (clap alone said
+/// "unexpected argument '-3' found").
+#[test]
+fn a_negative_value_is_refused_by_its_own_check() {
+    for (args, says) in [
+        (vec!["synth", "--load-kg", "-3000", "--out", "/dev/null"], "hook load must be a finite number"),
+        (vec!["simulate", "--load-kg", "-5"], "hook load must be a finite number"),
+        (vec!["chart", "--safety-factor", "-1"], "--safety-factor must be a number"),
+        (vec!["synth", "--from-deg", "-5", "--to-deg", "60", "--out", "/dev/null"], "luff angles must be in"),
+    ] {
+        let out = bin().args(&args).output().unwrap();
+        assert_eq!(out.status.code(), Some(1), "{args:?}");
+        assert!(text(&out.stderr).contains(says), "{args:?}: {}", text(&out.stderr));
+    }
+}
+
+/// A log whose every name and field is wrapped in double quotes (as a
+/// spreadsheet or a CSV library may write it) replays exactly as the
+/// unquoted one; a row ending with a comma is refused, saying so.
+#[test]
+fn a_quoted_log_replays_as_the_plain_one() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = std::fs::read_to_string(example("safe_lift.csv")).unwrap();
+    let quote = |line: &str| line.split(',').map(|f| format!("\"{f}\"")).collect::<Vec<_>>().join(",");
+    let quoted: String = src.lines().map(|l| if l.starts_with('#') { l.to_string() } else { quote(l) } + "\n").collect();
+    let path = dir.path().join("quoted.csv");
+    std::fs::write(&path, quoted).unwrap();
+    let cal = example("cal.json");
+    let args = ["--json", "--calibration", cal.to_str().unwrap()];
+    let (plain, q) = (replay(&example("safe_lift.csv"), &args), replay(&path, &args));
+    assert_eq!(q.status.code(), plain.status.code());
+    assert_eq!(json(&q), json(&plain));
+
+    let trailing: String = src.lines().map(|l| if l.starts_with('#') || l.starts_with("t_s") { l.to_string() } else { format!("{l},") } + "\n").collect();
+    std::fs::write(&path, trailing).unwrap();
+    let out = replay(&path, &args);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(text(&out.stderr).contains("the row ends with a comma"), "{}", text(&out.stderr));
+}
+
 /// Runs `crane-sim args` with its stdout a pipe whose reader is already
 /// gone: every write fails with EPIPE.
 fn with_closed_stdout(args: &[&str]) -> Output {
