@@ -519,6 +519,88 @@ fn a_lowering_after_a_raise_and_a_rest_f32() {
     lowering_after_a_raise_and_a_rest(Precision::F32);
 }
 
+/// A lowering past the rated radius inched, as an operator does near the
+/// chart's limit: down to 20° in steps of 5° from 75° (2 s moves, 2 s
+/// pauses), of 3° from 65° (2 s, 1 s), of 6° from 74° (2.5 s, 4 s) or of 4°
+/// from 72° (2 s, 0.5 s), ramps of a quarter of
+/// the move (at most 0.5 s); every rope, both friction laws, loads rated at
+/// 45° and 30°. Returns the OVERLOADs set before true u = 1/1.1 and the
+/// samples at a true u ≥ 1.05 that are neither OVERLOAD nor FAULT (a cut
+/// that came late or was released); prints every case. The 3 m rope's
+/// swing takes p1 past its range in the short moves: FAULT, which cuts.
+fn inched_lowering(precision: Precision) -> (Vec<String>, Vec<String>) {
+    let (options, dt) = options_for_rate(RATE_HZ);
+    let (mut early, mut late) = (Vec::new(), Vec::new());
+    for (step_deg, move_s, pause_s) in [(5.0, 2.0, 2.0), (3.0, 2.0, 1.0), (6.0, 2.5, 4.0), (4.0, 2.0, 0.5)] {
+        for rope in ROPES {
+            for seals in SEALS {
+                for rated_at in [45.0f64, 30.0] {
+                    let w = rated_kg(rated_at.to_radians());
+                    // Down to 20° in at most 15 steps (a program holds 32 segments).
+                    let steps = ((55.0 / step_deg) as u32).min(15);
+                    let mut angle = 20.0 + f64::from(steps) * step_deg;
+                    let mut p = Program::new(angle, w, rope_choice(rope, 20.0)).unwrap();
+                    p.push(Segment::Hold { duration_s: HOLD_BEFORE_S }).unwrap();
+                    let ramp = (move_s / 4.0f64).min(0.5);
+                    for _ in 0..steps {
+                        angle -= step_deg;
+                        p.push(Segment::Luff { to_deg: angle, shape: RampShape::Cycloidal, t1_s: ramp, t2_s: move_s - ramp, t3_s: move_s }).unwrap();
+                        p.push(Segment::Hold { duration_s: pause_s }).unwrap();
+                    }
+                    let rows = synthesize(&simulate_program(model(), &p, &options).expect("simulation"), dt, 0.0, 0.0, &sensors(seals, 9));
+                    let pts = replay_rows(&rows, seals, precision);
+                    let name = format!("{:.0}->20 in {step_deg} deg steps ({move_s} s, {pause_s} s pauses) {rope:?} {seals:?}, rated at {rated_at}", 20.0 + f64::from(steps) * step_deg);
+                    let onset = lowest_onset_u(&pts);
+                    let uncut = pts.iter().filter(|q| q.u >= 1.05 && !matches!(q.state, LimiterState::Overload | LimiterState::Fault)).count();
+                    println!("{name:<80} first OVERLOAD at true u {}, lowest onset {}, samples over 1.05 not cut {uncut}", first_overload(&pts).map_or("none".into(), |f| format!("{:.3}", f.1)), onset.map_or("none".into(), |u| format!("{u:.3}")));
+                    if let Some(u) = onset.filter(|&u| u < 1.0 / 1.1) {
+                        early.push(format!("{name}: OVERLOAD at true u {u:.3}"));
+                    }
+                    if uncut > 0 {
+                        late.push(format!("{name}: {uncut} samples at true u >= 1.05 not cut"));
+                    }
+                }
+            }
+        }
+    }
+    (early, late)
+}
+
+/// [`inched_lowering`]: never a true u of 1.05 or more without the cut
+/// (OVERLOAD or FAULT). Early cuts are [`inched_lowering_known_gap`]'s.
+fn inched_lowering_is_cut(precision: Precision) {
+    let (early, late) = inched_lowering(precision);
+    println!("{precision:?}: {} early: {early:#?}", early.len());
+    assert!(late.is_empty(), "{late:#?}");
+}
+
+#[test]
+fn an_inched_lowering_is_cut_f64() {
+    inched_lowering_is_cut(Precision::F64);
+}
+
+#[test]
+fn an_inched_lowering_is_cut_f32() {
+    inched_lowering_is_cut(Precision::F32);
+}
+
+/// KNOWN GAP, measured (f64; f32 alike): an inched lowering
+/// ([`inched_lowering`]) is cut early, toward safety, in 10 of 64 cases: at
+/// true u 0.804–0.844 (the 8.9 m rope in 6° steps with 4 s pauses),
+/// 0.883–0.888 (the 3 m rope in 3° steps, the load rated at 45°) and
+/// 0.904–0.908 (the 6.0 m rope in 5° steps, the 8.9 m rope in 3° steps).
+/// Each pause starts a swing the next move meets out of phase. Before the
+/// averages carried the rest's weighing into the next move
+/// (`moment_limiter::static_load`), 7 of 64 (the 3 m rope in 3° steps at
+/// 0.906, with constant friction only; the 6.0 m rope's only with the load
+/// rated at 45°).
+#[test]
+#[ignore = "KNOWN GAP: an inched lowering past the rated radius is cut early (toward safety) in 10 of 64 cases, from true u 0.804"]
+fn inched_lowering_known_gap() {
+    let (early, _) = inched_lowering(Precision::F64);
+    assert!(early.is_empty(), "{early:#?}");
+}
+
 /// Lift-off at 50° (2 s): 90 % of rated → no OVERLOAD; 110 % → OVERLOAD
 /// within 1 s of the load leaving the ground (the end of the lift).
 fn lift_off(precision: Precision, seals_of: &[Seals]) {
