@@ -601,6 +601,50 @@ fn inched_lowering_known_gap() {
     assert!(early.is_empty(), "{early:#?}");
 }
 
+/// KNOWN GAP, measured (f64, seal friction): the limiter switched on while
+/// the load swings (a power cut or a watchdog reset right after a move):
+/// 85 % of the rated load at the lower angle moved 40° → 80°, 40° → 60° or
+/// 80° → 40° in 10 s on every rope, the limiter started 0.5 s or 3 s after
+/// the stop, 30 s at rest. At power-up the bank takes the load hanging
+/// still (its ropes swing with the boom's moves, and it has seen none), so
+/// the swing reads as load: on every rope at 40° → 60°, and on the thesis
+/// rope and the 17 m held one, 1.10–1.64 × the load and no OVERLOAD; on the
+/// 3 m and 10 m held ropes up to 3.1 × the load at 80° (true u 0.46) and
+/// 1.2–1.5 × at 40° (true u 0.85), an OVERLOAD for 11–30 s of the 30 s at
+/// rest (8 of 24 cases). It
+/// errs toward cutting: the moment-reducing motions stay free, and setting
+/// the load down ends it.
+#[test]
+#[ignore = "KNOWN GAP: switched on while the load swings, the swing reads as load (up to 3.1 x at 80 deg on a 3 m rope): OVERLOAD at true u 0.46-0.85"]
+fn power_up_with_the_load_swinging_known_gap() {
+    let (options, dt) = options_for_rate(RATE_HZ);
+    let mut failures = Vec::new();
+    for (from, to) in [(40.0, 80.0), (40.0, 60.0), (80.0, 40.0)] {
+        for rope in ROPES {
+            let lowest = f64::min(from, to);
+            let w = 0.85 * rated_kg(lowest.to_radians());
+            let mut p = Program::new(from, w, rope_choice(rope, lowest)).unwrap();
+            p.push(Segment::Hold { duration_s: HOLD_BEFORE_S }).unwrap();
+            p.push(Segment::Luff { to_deg: to, shape: RampShape::Cycloidal, t1_s: 1.0, t2_s: 9.0, t3_s: 10.0 }).unwrap();
+            p.push(Segment::Hold { duration_s: 30.0 }).unwrap();
+            let rows = synthesize(&simulate_program(model(), &p, &options).expect("simulation"), dt, 0.0, 0.0, &sensors(Seals::Seal, 9));
+            for after_stop in [0.5, 3.0] {
+                let on = HOLD_BEFORE_S + 10.0 + after_stop;
+                let rows: Vec<SynthRow> = rows.iter().filter(|r| r.t_s >= on).copied().collect();
+                let pts = replay_rows(&rows, Seals::Seal, Precision::F64);
+                let high = pts.iter().filter(|q| q.state != LimiterState::Fault).map(|q| q.ratio).fold(0.0, f64::max);
+                let overload_s = pts.iter().filter(|q| q.state == LimiterState::Overload).count() as f64 / RATE_HZ;
+                let name = format!("{from:.0}->{to:.0} {rope:?}, switched on {after_stop} s after the stop");
+                println!("{name:<56} highest estimate/true {high:.3}, in OVERLOAD {overload_s:.1} s (true u {:.3})", pts.first().map_or(f64::NAN, |q| q.u));
+                if overload_s > 0.0 {
+                    failures.push(format!("{name}: OVERLOAD for {overload_s:.1} s"));
+                }
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
 /// Lift-off at 50° (2 s): 90 % of rated → no OVERLOAD; 110 % → OVERLOAD
 /// within 1 s of the load leaving the ground (the end of the lift).
 fn lift_off(precision: Precision, seals_of: &[Seals]) {
