@@ -519,6 +519,83 @@ fn a_lowering_after_a_raise_and_a_rest_f32() {
     lowering_after_a_raise_and_a_rest(Precision::F32);
 }
 
+/// A lowering past the rated radius after a load was added at rest: 60 %
+/// of the load rated at 45° or 30° raised 60° → 80° in 10 s, `rest` s at
+/// rest, the rest of it taken up in 1 s, 5 s more, then lowered 80° → 20°
+/// in 15 s; every rope, both friction laws. Returns the cases cut before
+/// true u = 1/1.1, or with a sample at a true u ≥ 1.05 that is neither
+/// OVERLOAD nor FAULT (cut late or released).
+fn lowering_after_a_load_added_at_rest(precision: Precision, rest: f64) -> Vec<String> {
+    let (options, dt) = options_for_rate(RATE_HZ);
+    let mut failures = Vec::new();
+    for rope in ROPES {
+        for seals in SEALS {
+            for rated_at in [45.0f64, 30.0] {
+                let w1 = rated_kg(rated_at.to_radians());
+                let mut p = Program::new(60.0, 0.6 * w1, rope_choice(rope, 20.0)).unwrap();
+                p.push(Segment::Hold { duration_s: HOLD_BEFORE_S }).unwrap();
+                p.push(Segment::Luff { to_deg: 80.0, shape: RampShape::Cycloidal, t1_s: 1.0, t2_s: 9.0, t3_s: 10.0 }).unwrap();
+                p.push(Segment::Hold { duration_s: rest }).unwrap();
+                p.push(Segment::LiftOff { duration_s: 1.0, load_kg: w1 }).unwrap();
+                p.push(Segment::Hold { duration_s: 5.0 }).unwrap();
+                p.push(Segment::Luff { to_deg: 20.0, shape: RampShape::Linear, t1_s: 1.0, t2_s: 14.0, t3_s: 15.0 }).unwrap();
+                p.push(Segment::Hold { duration_s: HOLD_AFTER_S }).unwrap();
+                let rows = synthesize(&simulate_program(model(), &p, &options).expect("simulation"), dt, 0.0, 0.0, &sensors(seals, 9));
+                let pts = replay_rows(&rows, seals, precision);
+                let name = format!("60->80, {rest} s at rest, 60 % -> 100 % of rated at {rated_at}, 80->20 15s {rope:?} {seals:?}");
+                let onset = lowest_onset_u(&pts);
+                let uncut = pts.iter().find(|q| q.u >= 1.05 && !matches!(q.state, LimiterState::Overload | LimiterState::Fault));
+                println!("{name:<78} lowest OVERLOAD onset at true u {}", onset.map_or("none".into(), |u| format!("{u:.3}")));
+                if let Some(u) = onset.filter(|&u| u < 1.0 / 1.1) {
+                    failures.push(format!("{name}: OVERLOAD at true u {u:.3}"));
+                }
+                if let Some(q) = uncut {
+                    failures.push(format!("{name}: {:?} at {:.2} s, true u {:.3}", q.state, q.t, q.u));
+                }
+            }
+        }
+    }
+    failures
+}
+
+/// [`lowering_after_a_load_added_at_rest`] 14 s after the stop, when the
+/// swing's period is known and the load added is read from the force's
+/// ratio to one period earlier (`moment_limiter::period_mean`): cut between
+/// true u 1/1.1 and 1.05 and never released over it. Before the averages
+/// took up that reading (`moment_limiter::static_load`, "The averages carry
+/// the rest's weighing into the next move"), the lowering started from the
+/// averages of the old load, read 0.72–0.9 of the new one, and the 8.9 m
+/// rope was cut at true u 1.079–1.085 (at the start of the session also the
+/// 3 m rope's cut was released at 1.05).
+fn lowering_after_a_load_added_14_s_after_the_stop(precision: Precision) {
+    let failures = lowering_after_a_load_added_at_rest(precision, 14.0);
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
+#[test]
+fn a_lowering_after_a_load_added_at_rest_f64() {
+    lowering_after_a_load_added_14_s_after_the_stop(Precision::F64);
+}
+
+#[test]
+fn a_lowering_after_a_load_added_at_rest_f32() {
+    lowering_after_a_load_added_14_s_after_the_stop(Precision::F32);
+}
+
+/// KNOWN GAP, measured (f64): the same with the load added 3 s after the
+/// stop at 80°, before the swing's period is known, on ropes where no rope
+/// of the bank follows the swing (`a_load_added_at_rest_after_a_move_known_gap`):
+/// nothing has weighed the new load when the lowering starts 6 s after the
+/// take-up, and the 8.9 m rope is cut only at true u 1.13–1.135, the 3 m
+/// rope (seal friction) releases its cut at 1.06. The same at the start of
+/// this session.
+#[test]
+#[ignore = "KNOWN GAP: a load added 3 s after a stop at 80 deg, then lowered past the rated radius: cut late (true u 1.13) where no rope follows the swing"]
+fn a_lowering_soon_after_a_load_added_at_rest_known_gap() {
+    let failures = lowering_after_a_load_added_at_rest(Precision::F64, 3.0);
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
 /// A lowering past the rated radius inched, as an operator does near the
 /// chart's limit: down to 20° in steps of 5° from 75° (2 s moves, 2 s
 /// pauses), of 3° from 65° (2 s, 1 s), of 6° from 74° (2.5 s, 4 s) or of 4°

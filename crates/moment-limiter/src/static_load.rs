@@ -324,7 +324,16 @@
 //! sank in a pause had read the last move high: it is cut early in 10 of 64
 //! cases (true u 0.804–0.908) instead of 7 (`inched_lowering_known_gap`);
 //! raised to the held weighing instead of W_slow at the stop, in 12. No
-//! inched lowering is cut late (`an_inched_lowering_is_cut_*`).
+//! inched lowering is cut late (`an_inched_lowering_is_cut_*`). A load
+//! added at rest and read from the force's ratio to one period earlier
+//! (the period mean's step) is taken up by the averages too, as the
+//! rescale's is: lowered 80° → 20° after 60 % of rated became 100 % 14 s
+//! after the stop, the 8.9 m rope was cut at true u 1.079–1.085, the
+//! lowering starting from the old load's averages; now within the bounds
+//! (`a_lowering_after_a_load_added_at_rest_*`). Added 3 s after the stop,
+//! before the period is known, where no rope follows the swing, nothing
+//! weighs it before the move, and that rope is cut at 1.13
+//! (`a_lowering_soon_after_a_load_added_at_rest_known_gap`).
 //!
 //! ## A load set down: the ropes hang still again
 //!
@@ -1047,7 +1056,16 @@ impl<T: Real> StaticLoadBank<T> {
             None => load_kg,
         };
         let provisional = self.after_move && self.settled && self.still_s <= T::lit(REST_HOLD_S) && !agree && !mean_weighs;
-        let load_kg = step_kg.map_or(load_kg, |w| load_kg.max(w));
+        let load_kg = match step_kg {
+            Some(w) => {
+                // A load added, read from the swing: the averages take it
+                // up, as the rescale's (see the module doc, "The averages
+                // carry the rest's weighing into the next move").
+                self.raise_averages(w);
+                load_kg.max(w)
+            }
+            None => load_kg,
+        };
         if !self.still {
             self.last_kg = Some(load_kg);
         }
