@@ -166,9 +166,7 @@ impl Scenario {
     }
 
     fn rows(&self) -> Vec<SynthRow> {
-        let (options, dt) = options_for_rate(RATE_HZ);
-        let samples = simulate_program(model(), &self.program(), &options).expect("simulation");
-        synthesize(&samples, dt, 0.0, self.load_kg, &sensors(self.seals, self.seed))
+        program_rows(&self.program(), self.seals, self.seed)
     }
 }
 
@@ -328,6 +326,20 @@ fn lowest_onset_u(points: &[Point]) -> Option<f64> {
     lowest
 }
 
+/// The samples at a true u of 1.05 or more that are neither OVERLOAD nor
+/// FAULT: a cut that came late or was released.
+fn uncut(points: &[Point]) -> impl Iterator<Item = &Point> {
+    points.iter().filter(|q| q.u >= 1.05 && !matches!(q.state, LimiterState::Overload | LimiterState::Fault))
+}
+
+/// The log of `program` at [`RATE_HZ`], on the crane with `seals` and the
+/// noise draw `seed`.
+fn program_rows(program: &Program, seals: Seals, seed: u32) -> Vec<SynthRow> {
+    let (options, dt) = options_for_rate(RATE_HZ);
+    let samples = simulate_program(model(), program, &options).expect("simulation");
+    synthesize(&samples, dt, 0.0, 0.0, &sensors(seals, seed))
+}
+
 fn percentile(v: &mut [f64], q: f64) -> f64 {
     v.sort_by(f64::total_cmp);
     if v.is_empty() {
@@ -435,6 +447,24 @@ fn lowering_past_rated_radius_f32() {
     lowering_past_rated_radius(Precision::F32, &ROPES, &SEALS);
 }
 
+/// [`HOLD_BEFORE_S`] at rest at 60° with `w0` kg on `rope`, raised to 80°
+/// in 10 s, `rest` s at rest; if `w1` is more than `w0`, the load taken up
+/// to `w1` in 1 s and 5 s more at rest; then lowered 80° → 20° in 15 s
+/// (linear ramps of 1 s) and [`HOLD_AFTER_S`] at rest.
+fn raise_rest_lower(w0: f64, w1: f64, rope: Rope, rest: f64) -> Program {
+    let mut p = Program::new(60.0, w0, rope_choice(rope, 20.0)).unwrap();
+    p.push(Segment::Hold { duration_s: HOLD_BEFORE_S }).unwrap();
+    p.push(Segment::Luff { to_deg: 80.0, shape: RampShape::Cycloidal, t1_s: 1.0, t2_s: 9.0, t3_s: 10.0 }).unwrap();
+    p.push(Segment::Hold { duration_s: rest }).unwrap();
+    if w1 > w0 {
+        p.push(Segment::LiftOff { duration_s: 1.0, load_kg: w1 }).unwrap();
+        p.push(Segment::Hold { duration_s: 5.0 }).unwrap();
+    }
+    p.push(Segment::Luff { to_deg: 20.0, shape: RampShape::Linear, t1_s: 1.0, t2_s: 14.0, t3_s: 15.0 }).unwrap();
+    p.push(Segment::Hold { duration_s: HOLD_AFTER_S }).unwrap();
+    p
+}
+
 /// A lowering past the rated radius right after a raise and a rest, the way
 /// a crane gets there: the load rated at 45° or 30° raised 60° → 80° in
 /// 10 s, `rest` s at rest (3, 8 and 20 s: before, within and after the
@@ -455,7 +485,6 @@ fn lowering_past_rated_radius_f32() {
 /// 0.67 of the load, 4 cases were cut only past true u 1.05 (1.055–1.064),
 /// and 6 released their OVERLOAD at true u over 1.05.
 fn lowering_after_a_raise_and_a_rest(precision: Precision) {
-    let (options, dt) = options_for_rate(RATE_HZ);
     let mut failures = Vec::new();
     let mut lowest_cut: f64 = f64::INFINITY;
     let mut highest_cut: f64 = 0.0;
@@ -465,18 +494,12 @@ fn lowering_after_a_raise_and_a_rest(precision: Precision) {
             for seals in SEALS {
                 for rated_at in [45.0f64, 30.0] {
                     let w = rated_kg(rated_at.to_radians());
-                    let mut p = Program::new(60.0, w, rope_choice(rope, 20.0)).unwrap();
-                    p.push(Segment::Hold { duration_s: HOLD_BEFORE_S }).unwrap();
-                    p.push(Segment::Luff { to_deg: 80.0, shape: RampShape::Cycloidal, t1_s: 1.0, t2_s: 9.0, t3_s: 10.0 }).unwrap();
-                    p.push(Segment::Hold { duration_s: rest }).unwrap();
-                    p.push(Segment::Luff { to_deg: 20.0, shape: RampShape::Linear, t1_s: 1.0, t2_s: 14.0, t3_s: 15.0 }).unwrap();
-                    p.push(Segment::Hold { duration_s: HOLD_AFTER_S }).unwrap();
-                    let rows = synthesize(&simulate_program(model(), &p, &options).expect("simulation"), dt, 0.0, 0.0, &sensors(seals, 9));
+                    let rows = program_rows(&raise_rest_lower(w, w, rope, rest), seals, 9);
                     let pts = replay_rows(&rows, seals, precision);
                     let name = format!("60->80, {rest} s at rest, 80->20 15s {rope:?} {seals:?}, rated at {rated_at}");
                     let first = first_overload(&pts);
                     let t105 = pts.iter().find(|q| q.u >= 1.05).map(|q| q.t);
-                    let released = pts.iter().find(|q| q.u >= 1.05 && !matches!(q.state, LimiterState::Overload | LimiterState::Fault));
+                    let released = uncut(&pts).next();
                     // The lowering's constant-velocity part, outside FAULTs.
                     let start = HOLD_BEFORE_S + 10.0 + rest;
                     let low = pts.iter().filter(|q| q.t >= start + 1.0 && q.t <= start + 14.0 && q.state != LimiterState::Fault).map(|q| q.ratio).fold(f64::INFINITY, f64::min);
@@ -526,30 +549,21 @@ fn a_lowering_after_a_raise_and_a_rest_f32() {
 /// true u = 1/1.1, or with a sample at a true u ≥ 1.05 that is neither
 /// OVERLOAD nor FAULT (cut late or released).
 fn lowering_after_a_load_added_at_rest(precision: Precision, rest: f64) -> Vec<String> {
-    let (options, dt) = options_for_rate(RATE_HZ);
     let mut failures = Vec::new();
     for rope in ROPES {
         for seals in SEALS {
             for rated_at in [45.0f64, 30.0] {
                 let w1 = rated_kg(rated_at.to_radians());
-                let mut p = Program::new(60.0, 0.6 * w1, rope_choice(rope, 20.0)).unwrap();
-                p.push(Segment::Hold { duration_s: HOLD_BEFORE_S }).unwrap();
-                p.push(Segment::Luff { to_deg: 80.0, shape: RampShape::Cycloidal, t1_s: 1.0, t2_s: 9.0, t3_s: 10.0 }).unwrap();
-                p.push(Segment::Hold { duration_s: rest }).unwrap();
-                p.push(Segment::LiftOff { duration_s: 1.0, load_kg: w1 }).unwrap();
-                p.push(Segment::Hold { duration_s: 5.0 }).unwrap();
-                p.push(Segment::Luff { to_deg: 20.0, shape: RampShape::Linear, t1_s: 1.0, t2_s: 14.0, t3_s: 15.0 }).unwrap();
-                p.push(Segment::Hold { duration_s: HOLD_AFTER_S }).unwrap();
-                let rows = synthesize(&simulate_program(model(), &p, &options).expect("simulation"), dt, 0.0, 0.0, &sensors(seals, 9));
+                let rows = program_rows(&raise_rest_lower(0.6 * w1, w1, rope, rest), seals, 9);
                 let pts = replay_rows(&rows, seals, precision);
                 let name = format!("60->80, {rest} s at rest, 60 % -> 100 % of rated at {rated_at}, 80->20 15s {rope:?} {seals:?}");
                 let onset = lowest_onset_u(&pts);
-                let uncut = pts.iter().find(|q| q.u >= 1.05 && !matches!(q.state, LimiterState::Overload | LimiterState::Fault));
+                let late = uncut(&pts).next();
                 println!("{name:<78} lowest OVERLOAD onset at true u {}", onset.map_or("none".into(), |u| format!("{u:.3}")));
                 if let Some(u) = onset.filter(|&u| u < 1.0 / 1.1) {
                     failures.push(format!("{name}: OVERLOAD at true u {u:.3}"));
                 }
-                if let Some(q) = uncut {
+                if let Some(q) = late {
                     failures.push(format!("{name}: {:?} at {:.2} s, true u {:.3}", q.state, q.t, q.u));
                 }
             }
@@ -606,7 +620,6 @@ fn a_lowering_soon_after_a_load_added_at_rest_known_gap() {
 /// that came late or was released); prints every case. The 3 m rope's
 /// swing takes p1 past its range in the short moves: FAULT, which cuts.
 fn inched_lowering(precision: Precision) -> (Vec<String>, Vec<String>) {
-    let (options, dt) = options_for_rate(RATE_HZ);
     let (mut early, mut late) = (Vec::new(), Vec::new());
     for (step_deg, move_s, pause_s) in [(5.0, 2.0, 2.0), (3.0, 2.0, 1.0), (6.0, 2.5, 4.0), (4.0, 2.0, 0.5)] {
         for rope in ROPES {
@@ -624,11 +637,11 @@ fn inched_lowering(precision: Precision) -> (Vec<String>, Vec<String>) {
                         p.push(Segment::Luff { to_deg: angle, shape: RampShape::Cycloidal, t1_s: ramp, t2_s: move_s - ramp, t3_s: move_s }).unwrap();
                         p.push(Segment::Hold { duration_s: pause_s }).unwrap();
                     }
-                    let rows = synthesize(&simulate_program(model(), &p, &options).expect("simulation"), dt, 0.0, 0.0, &sensors(seals, 9));
+                    let rows = program_rows(&p, seals, 9);
                     let pts = replay_rows(&rows, seals, precision);
                     let name = format!("{:.0}->20 in {step_deg} deg steps ({move_s} s, {pause_s} s pauses) {rope:?} {seals:?}, rated at {rated_at}", 20.0 + f64::from(steps) * step_deg);
                     let onset = lowest_onset_u(&pts);
-                    let uncut = pts.iter().filter(|q| q.u >= 1.05 && !matches!(q.state, LimiterState::Overload | LimiterState::Fault)).count();
+                    let uncut = uncut(&pts).count();
                     println!("{name:<80} first OVERLOAD at true u {}, lowest onset {}, samples over 1.05 not cut {uncut}", first_overload(&pts).map_or("none".into(), |f| format!("{:.3}", f.1)), onset.map_or("none".into(), |u| format!("{u:.3}")));
                     if let Some(u) = onset.filter(|&u| u < 1.0 / 1.1) {
                         early.push(format!("{name}: OVERLOAD at true u {u:.3}"));
@@ -694,7 +707,6 @@ fn inched_lowering_known_gap() {
 #[test]
 #[ignore = "KNOWN GAP: switched on while the load swings, the swing reads as load (up to 3.1 x at 80 deg on a 3 m rope): OVERLOAD at true u 0.46-0.85"]
 fn power_up_with_the_load_swinging_known_gap() {
-    let (options, dt) = options_for_rate(RATE_HZ);
     let mut failures = Vec::new();
     for (from, to) in [(40.0, 80.0), (40.0, 60.0), (80.0, 40.0)] {
         for rope in ROPES {
@@ -704,7 +716,7 @@ fn power_up_with_the_load_swinging_known_gap() {
             p.push(Segment::Hold { duration_s: HOLD_BEFORE_S }).unwrap();
             p.push(Segment::Luff { to_deg: to, shape: RampShape::Cycloidal, t1_s: 1.0, t2_s: 9.0, t3_s: 10.0 }).unwrap();
             p.push(Segment::Hold { duration_s: 30.0 }).unwrap();
-            let rows = synthesize(&simulate_program(model(), &p, &options).expect("simulation"), dt, 0.0, 0.0, &sensors(Seals::Seal, 9));
+            let rows = program_rows(&p, Seals::Seal, 9);
             for after_stop in [0.5, 3.0] {
                 let on = HOLD_BEFORE_S + 10.0 + after_stop;
                 let rows: Vec<SynthRow> = rows.iter().filter(|r| r.t_s >= on).copied().collect();
@@ -769,9 +781,7 @@ fn lift_after_a_move(from: f64, to: f64, rope: Rope, seals: Seals, w0: f64, at_r
     p.push(Segment::Hold { duration_s: at_rest_s }).unwrap();
     p.push(Segment::LiftOff { duration_s: take_up_s, load_kg: w1 }).unwrap();
     p.push(Segment::Hold { duration_s: after_s }).unwrap();
-    let (options, dt) = options_for_rate(RATE_HZ);
-    let samples = simulate_program(model(), &p, &options).expect("simulation");
-    synthesize(&samples, dt, 0.0, w0, &sensors(seals, 13))
+    program_rows(&p, seals, 13)
 }
 
 /// Lift-off taken up fast on a slow angle sensor (run it
@@ -1345,9 +1355,7 @@ fn long_rest_after_a_move(precision: Precision) {
                     p.push(Segment::Hold { duration_s: HOLD_BEFORE_S }).unwrap();
                     p.push(Segment::Luff { to_deg: to, shape: RampShape::Cycloidal, t1_s: 1.0, t2_s: 9.0, t3_s: 10.0 }).unwrap();
                     p.push(Segment::Hold { duration_s: AT_REST_S }).unwrap();
-                    let (options, dt) = options_for_rate(RATE_HZ);
-                    let samples = simulate_program(model(), &p, &options).expect("simulation");
-                    let rows = synthesize(&samples, dt, 0.0, w, &sensors(seals, 17));
+                    let rows = program_rows(&p, seals, 17);
                     let pts = replay_rows(&rows, seals, precision);
                     let stop = HOLD_BEFORE_S + 10.0;
                     let at_rest: Vec<f64> = pts.iter().filter(|q| q.t >= stop + 1.0 && q.state != LimiterState::Fault).map(|q| q.ratio).collect();
@@ -1516,7 +1524,7 @@ fn a_shift_of_work(precision: Precision, hours: f64, cycle: fn(RopeChoice, f64) 
             p.push(Segment::Hold { duration_s: 5.0 }).unwrap();
             p.push(Segment::LiftOff { duration_s: 1.0, load_kg: frac * rated }).unwrap();
             p.push(Segment::Hold { duration_s: 10.0 }).unwrap();
-            synthesize(&simulate_program(model(), &p, &options).expect("simulation"), dt, 0.0, 0.0, &sensors(Seals::Seal, 99))
+            program_rows(&p, Seals::Seal, 99)
         })
         .collect();
     let run = |n: usize| match precision {

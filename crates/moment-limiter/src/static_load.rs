@@ -1163,6 +1163,31 @@ mod rest_tests {
         }
     }
 
+    /// The boom of a 10 s-like move from `from` to `to` degrees (accelerate
+    /// 1 s, turn at constant rate to 9 s, decelerate 1 s, then rest),
+    /// sampled every `dt` s for `steps` steps: (t, θ, rate, acceleration).
+    fn raise(from: f64, to: f64, dt: f64, steps: u32) -> impl Iterator<Item = (f64, f64, f64, f64)> {
+        // Ramps of 1 s and 8 s at constant rate: rate = span / 9.
+        let rate_max = (to - from).to_radians() / 9.0;
+        let (mut th, mut rate) = (from.to_radians(), 0.0);
+        (0..steps).map(move |k| {
+            let t = f64::from(k) * dt;
+            let acc = if (1.0..2.0).contains(&t) {
+                rate_max
+            } else if (9.0..10.0).contains(&t) {
+                -rate_max
+            } else {
+                0.0
+            };
+            rate += acc * dt;
+            if t >= 10.0 {
+                rate = 0.0;
+            }
+            th += rate * dt;
+            (t, th, rate, acc)
+        })
+    }
+
     /// A 10 s-like raise from `from` to `to` degrees (accelerate 1 s, turn,
     /// decelerate 1 s), then rest; the truth a held rope `truth` of the bank,
     /// its load `w0` and from `add_at` s on `w1`. Returns (t, estimate, true
@@ -1180,25 +1205,8 @@ mod rest_tests {
         let mut world = HeldRopes::new([HELD_LENGTHS_M[truth]], g.gravity_m_s2);
         let mut bank = StaticLoadBank::new(g);
         let dt = 0.01;
-        let span = (to - from).to_radians();
-        // Ramps of 1 s and 8 s at constant rate: rate = span / 9.
-        let rate_max = span / 9.0;
-        let (mut th, mut rate) = (from.to_radians(), 0.0);
         let mut out = Vec::new();
-        for k in 0..2000 {
-            let t = f64::from(k) * dt;
-            let acc = if (1.0..2.0).contains(&t) {
-                rate_max
-            } else if (9.0..10.0).contains(&t) {
-                -rate_max
-            } else {
-                0.0
-            };
-            rate += acc * dt;
-            if t >= 10.0 {
-                rate = 0.0;
-            }
-            th += rate * dt;
+        for (t, th, rate, acc) in raise(from, to, dt, 2000) {
             bank.advance(th, rate, acc, dt);
             let w = if t >= add_at { w1 } else { w0 };
             let f = match world_give {
@@ -1322,14 +1330,8 @@ mod rest_tests {
         let mut world = HeldRopes::new([HELD_LENGTHS_M[truth]], g.gravity_m_s2);
         let mut bank = StaticLoadBank::new(g);
         let dt = 0.01;
-        let rate_max = (to - 40.0f64).to_radians() / 9.0;
-        let (mut th, mut rate) = (40f64.to_radians(), 0.0);
         let mut out = Vec::new();
-        for k in 0..6000 {
-            let t = f64::from(k) * dt;
-            let acc = if (1.0..2.0).contains(&t) { rate_max } else if (9.0..10.0).contains(&t) { -rate_max } else { 0.0 };
-            rate = if t >= 10.0 { 0.0 } else { rate + acc * dt };
-            th += rate * dt;
+        for (t, th, rate, acc) in raise(40.0, to, dt, 6000) {
             bank.advance(th, rate, acc, dt);
             world.update(&BoomTip::new(th.sin_cos(), g.boom_length_m, rate, acc, dt));
             let (w, f) = if t < set_down { (w0, world.factor(0).unwrap()) } else if t < lift { (0.0, 1.0) } else { (w1, 1.0) };
