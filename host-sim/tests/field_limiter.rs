@@ -1175,10 +1175,131 @@ fn a_load_added_at_rest_after_a_move_on_a_slow_sensor() {
 /// longer by the boom's give at rest (`moment_limiter::static_load`), the
 /// 3 m rope at 60° with the seals' friction is seen after 0.86–0.91 s (1.88
 /// before) and cut at +0.96 s; with constant friction still after 1.88 s.
+/// The 13 m rope at 80° and the 3 m one at 60° with constant friction are
+/// seen within 1 s when the stop's friction does not count against the
+/// ropes' consistency (see
+/// [`a_load_added_at_rest_on_the_paid_out_rope_soon_after_a_raise_known_gap`]).
 #[test]
 #[ignore = "KNOWN GAP: a load added at rest where no rope of the bank follows the true swing (short ropes at 60-80 deg, ropes between the grid's lengths at 80 deg): seen after 1.9-2.2 s or not within 4 s"]
 fn a_load_added_at_rest_after_a_move_known_gap() {
     load_added_at_rest_after_a_move(Precision::F64, &ADDED_GAP);
+}
+
+/// Moves after which a load added at rest on the paid-out rope (the
+/// thesis's: the hoist pays out as the boom rises, so the rope is the tip
+/// height less the clearance, 9–25 m, its swing period 6–10 s) is seen at
+/// once however soon after the stop it is added.
+const PAID_OUT_SEEN: [(f64, f64); 5] = [(40.0, 60.0), (60.0, 40.0), (80.0, 40.0), (70.0, 20.0), (60.0, 80.0)];
+
+/// Where it is not seen 3 s after the stop (see
+/// [`a_load_added_at_rest_on_the_paid_out_rope_soon_after_a_raise_known_gap`]).
+const PAID_OUT_SOON_GAP: [(f64, f64); 4] = [(40.0, 80.0), (20.0, 70.0), (50.0, 80.0), (20.0, 50.0)];
+
+/// A load added at rest on the paid-out rope: a 10 s cycloidal move
+/// `from` → `to` with 60 % of the lower angle's rated load, `at_rest_s` at
+/// rest, then 90 % or 110 % of the rated load at `to` taken up over 0.5 s,
+/// 20 s more at rest; both friction laws. At 110 % OVERLOAD within 1 s of
+/// the take-up's end, at a true u of at least 1/1.1, and held to the end; at
+/// 90 % no OVERLOAD, and the estimate (×1.05) at 1/1.1 of the true load
+/// within 1 s. Before the rescale restarted the hold's 20 s
+/// (`moment_limiter::static_load`, "A load added, held"), 110 % added 14 s
+/// after a raise to 70° or 80° was cut 0.8 s after the take-up and released
+/// 20 s after the stop, at true u 1.10, until the mean over one swing period
+/// weighed it 8 s later (cut again from +14 s).
+fn load_added_at_rest_on_the_paid_out_rope(precision: Precision, moves: &[(f64, f64)], at_rest_s: f64) {
+    const TAKE_UP_S: f64 = 0.5;
+    let mut failures = Vec::new();
+    for &(from, to) in moves {
+        let w0 = 0.6 * rated_kg(from.min(to).to_radians());
+        for seals in SEALS {
+            for frac in [0.9, 1.1] {
+                let w1 = frac * rated_kg(to.to_radians());
+                let name = format!("{from:.0}->{to:.0} 10s paid out {seals:?}, {at_rest_s:.0} s at rest: {w0:.0} kg, then {w1:.0} kg");
+                let rows = lift_after_a_move(from, to, Rope::Thesis, seals, w0, at_rest_s, TAKE_UP_S, w1, 20.0);
+                let pts = replay_rows(&rows, seals, precision);
+                let lifted = HOLD_BEFORE_S + 10.0 + at_rest_s + TAKE_UP_S;
+                let after: Vec<&Point> = pts.iter().filter(|q| q.t >= lifted).collect();
+                let seen = after.iter().find(|q| q.ratio >= 1.0 / 1.1).map(|q| q.t - lifted);
+                let cut = |q: &Point| matches!(q.state, LimiterState::Overload | LimiterState::Fault);
+                let held_from = match after.iter().rposition(|q| !cut(q)) {
+                    None => Some(0.0),
+                    Some(i) => after.get(i + 1).map(|q| q.t - lifted),
+                };
+                let first = first_overload(&pts);
+                println!(
+                    "{name:<74} seen {} s, first OVERLOAD {}, cut from {} s to the end",
+                    seen.map_or("never".into(), |s| format!("{s:+.2}")),
+                    first.map_or("none".into(), |f| format!("at {:+.2} s, true u {:.3}", f.0 - lifted, f.1)),
+                    held_from.map_or("never".into(), |s| format!("{s:+.2}"))
+                );
+                if frac < 1.0 {
+                    if let Some((t, u)) = first {
+                        failures.push(format!("{name}: OVERLOAD at {:+.2} s, true u {u:.3}", t - lifted));
+                    }
+                    if seen.is_none_or(|s| s > 1.0) {
+                        failures.push(format!("{name}: estimate at 1/1.1 of the true load from {seen:?} s"));
+                    }
+                } else {
+                    match first {
+                        Some((t, u)) if t <= lifted + 1.0 && u >= 1.0 / 1.1 => {
+                            if held_from.is_none_or(|h| h > t - lifted + 0.005) {
+                                failures.push(format!("{name}: OVERLOAD at {:+.2} s released, cut to the end only from {held_from:?} s", t - lifted));
+                            }
+                        }
+                        other => failures.push(format!("{name}: first OVERLOAD {other:?}, take-up ends at {lifted:.2} s")),
+                    }
+                }
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
+#[test]
+fn a_load_added_at_rest_on_the_paid_out_rope_f64() {
+    let all: Vec<_> = PAID_OUT_SEEN.iter().chain(&PAID_OUT_SOON_GAP).copied().collect();
+    load_added_at_rest_on_the_paid_out_rope(Precision::F64, &all, 14.0);
+    load_added_at_rest_on_the_paid_out_rope(Precision::F64, &PAID_OUT_SEEN, 3.0);
+}
+
+#[test]
+fn a_load_added_at_rest_on_the_paid_out_rope_f32() {
+    let all: Vec<_> = PAID_OUT_SEEN.iter().chain(&PAID_OUT_SOON_GAP).copied().collect();
+    load_added_at_rest_on_the_paid_out_rope(Precision::F32, &all, 14.0);
+    load_added_at_rest_on_the_paid_out_rope(Precision::F32, &PAID_OUT_SEEN, 3.0);
+}
+
+/// KNOWN GAP, measured (f64): 3 s after a raise to 70° or 80° on the
+/// paid-out rope, 110 % is cut only when the mean over one swing period
+/// weighs it, 12.5–14.3 s after the take-up (6.1 s after 20° → 70° with the
+/// seals' friction; 50° → 80° with them is seen at once), and after
+/// 20° → 50° 1.01 s after (0.01 s over the bound). The paid-out
+/// hypothesis follows the true swing (in motion it reads the load within
+/// 0.3 %), but the stop leaves its weighing up to 16 % low for 1–2 s: the
+/// force filter lets the cylinder's friction go as the stop passes through
+/// it, while the limiter takes it off in full until the filtered rate falls
+/// under 0.05 °/s, up to a second later, and then over `seal_release_s`.
+/// Its inconsistency (`moment_limiter::load_jump`) takes that dip in and is
+/// still 0.037–0.040 at the take-up, over the 0.03 a rope needs to vote, so
+/// no rope rescales the load.
+///
+/// Tried and not kept (measured): holding every rope's inconsistency from
+/// the boom's slowing down until the seals are released cuts 40° → 80° and
+/// 50° → 80° here at +0.81–0.86 s, the 13 m held rope after 40° → 80° at
+/// +0.89 s (never within 4 s) and the 3 m one after 40° → 60° at +0.96 s
+/// (1.93 s), but in the campaign (seeds 1 and 2) it made 4 false OVERLOADs
+/// at true u 0.70–0.80 after raises to 80–85° on 3.6–7.9 m ropes: ropes
+/// consistent in motion voted at rest, where they read the swing's crest.
+/// Making every rope prove itself again at rest once the seals are released
+/// removed those, but a rope then votes only 2.5–3 s after the stop, and
+/// 90 % added 3 s after a stop behind a 0.3 s sensor was seen after 1.8 s.
+/// What would close it: a friction share that leaves the force as the
+/// filter lets it go (a stop detector that does not wait for the filtered
+/// rate's tail), so that no stop moves the ropes' readings.
+#[test]
+#[ignore = "KNOWN GAP: a load added 3 s after a raise to 70-80 deg on the paid-out rope is cut only when the mean over one swing period weighs it (6.1-14.3 s after; 1.01 s after 20-50 deg)"]
+fn a_load_added_at_rest_on_the_paid_out_rope_soon_after_a_raise_known_gap() {
+    load_added_at_rest_on_the_paid_out_rope(Precision::F64, &PAID_OUT_SOON_GAP, 3.0);
 }
 
 /// The cases of [`ADDED_GAP`] but the 3 m rope stopped at 80°: there the
@@ -1841,3 +1962,5 @@ fn cost_per_cycle() {
         time(&m32, &rows, false)
     );
 }
+
+

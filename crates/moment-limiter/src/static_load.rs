@@ -226,6 +226,18 @@
 //! averages' pace as before (`host-sim` test
 //! `a_load_added_at_rest_after_a_move_known_gap`).
 //!
+//! **A load added, held.** The rescale's weighing is held as long as a
+//! move's: each rescale starts the [`REST_HOLD_S`] of the hold (and of the
+//! provisional reading, below) again. Held only until 20 s after the
+//! stop, a load added 14 s after a raise to 70° or 80° on the paid-out rope
+//! (9–25 m long, a swing of 6–10 s) was cut 0.8 s after its take-up and
+//! released at the hold's end, at a true u of 1.10: the lowest average had
+//! sunk to 0.79 of the new load, and the mean over one swing period weighed
+//! it only 8 s later (`host-sim` test
+//! `a_load_added_at_rest_on_the_paid_out_rope_*`). Within 20 s of the take-up
+//! that mean is found (P·4/3 and a second of confirmation, 14.3 s at the
+//! bank's longest period) and is the weighing from then on.
+//!
 //! **A load lifted after a move with the hook empty.** The averages weighed
 //! the empty hook (under [`load_jump::MIN_AVERAGE_KG`]), so there is no
 //! ratio to rescale by, and the load swings on as the hook did (the
@@ -442,8 +454,9 @@ const _: () = assert!(SETTLED_RAD_S <= SWING_DEADBAND_RAD_S && SETTLED_RAD_S <= 
 /// 0.06–0.35 and this stage at 0.33–0.57; it delays a lift-off by 0.23 s.
 pub const FAST_SMOOTHING_HZ: f64 = 0.7;
 
-/// Longest time the weighing of a move is held at rest (s): two swings of
-/// the longest rope of the bank (9.5 s at 22 m). See [`StaticLoadBank::update`].
+/// Longest time the weighing of a move, or of a load added at rest, is
+/// held at rest (s): two swings of the longest rope of the bank (9.5 s at
+/// 22 m). See [`StaticLoadBank::update`].
 pub const REST_HOLD_S: f64 = 20.0;
 
 /// Spread of the possible ropes' factors (f_max/f_min − 1) beyond which the
@@ -526,7 +539,9 @@ pub struct StaticLoadBank<T> {
     settled: bool,
     /// How long the boom has been moving without a pause (s).
     moving_s: T,
-    /// How long the boom has been still (s).
+    /// How long the boom has been still (s), counted again from each
+    /// rescale of a load added at rest (its weighing is held as long as a
+    /// move's).
     still_s: T,
     /// The last load reported in motion (kg): the move's weighing, whose
     /// give lengthens the pendulums at rest (see "At rest after a move: the
@@ -808,6 +823,9 @@ impl<T: Real> StaticLoadBank<T> {
             if let (Some(r), Some(s), Some(d)) = (rho, reading, rise) {
                 if r >= T::lit(1.0 + load_jump::JUMP) && d >= T::lit(load_jump::MIN_JUMP_KG) {
                     self.follow_s = T::lit(load_jump::FOLLOW_S);
+                    // The new load's weighing is held as long as a move's
+                    // (see the module doc, "A load added, held").
+                    self.still_s = T::lit(0.0);
                 }
                 if self.follow_s > T::lit(0.0) {
                     // Raise only: ρ ≤ 1 leaves everything as it is; at most
