@@ -2,7 +2,8 @@
 # Every test of the project, from a fresh machine: installs what the tests need
 # (the thumbv7em-none-eabihf target, QEMU, ARM binutils), then runs the host
 # tests (model physics, limiter, drivers, CLI), clippy with warnings denied, the
-# board build of the firmware, and the QEMU-vs-host replay of every example log.
+# API docs with broken links denied, the board build of the firmware, and the
+# QEMU-vs-host replay of every example log.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -12,6 +13,9 @@ echo "== clippy (warnings denied)"
 cargo clippy --workspace --exclude firmware --all-targets -- -D warnings
 cargo clippy -p firmware --release --target thumbv7em-none-eabihf -- -D warnings
 cargo clippy -p firmware --release --target thumbv7em-none-eabihf --no-default-features --features board -- -D warnings
+
+echo "== API docs (broken or private links denied)"
+RUSTDOCFLAGS="-D warnings" cargo doc --workspace --exclude firmware --no-deps
 
 echo "== firmware images (QEMU and board)"
 cargo build --release --target thumbv7em-none-eabihf -p firmware

@@ -32,7 +32,7 @@ use crane_model::Real;
 /// e^x for small x ≥ 0 by its cubic Taylor polynomial, 1 + x + x²/2 + x³/6:
 /// no libm exp in the cycle for the stages whose time step is not cached
 /// (relative error below 1e-9 at x = 0.05, i.e. dt = 10 ms, τ ≥ 0.2 s); at
-/// least 1 for every x ≥ 0, so e^(−x) ≈ 1/[`exp_taylor3`](x) is in (0, 1].
+/// least 1 for every x ≥ 0, so e^(−x) ≈ 1/`exp_taylor3(x)` is in (0, 1].
 pub fn exp_taylor3<T: Real>(x: T) -> T {
     T::lit(1.0) + x * (T::lit(1.0) + x * (T::lit(0.5) + x / T::lit(6.0)))
 }

@@ -222,7 +222,7 @@ impl<T: Real, const N: usize> HeldRopes<T, N> {
     }
 
     /// The factor of each rope's pull with a sensor lag of `lead_s` (s)
-    /// undone ([`lead_swing`]), the boom still at tan θ = `tan_angle`.
+    /// undone (`lead_swing`), the boom still at tan θ = `tan_angle`.
     pub fn led_factors(&self, lead_s: T, tan_angle: T) -> [T; N] {
         let tip = still_tip(tan_angle);
         let (g, zero) = (self.gravity_m_s2, T::lit(0.0));
@@ -363,7 +363,7 @@ impl<T: Real> PaidOutRope<T> {
     }
 
     /// The factor of the rope's pull with a sensor lag of `lead_s` (s)
-    /// undone ([`lead_swing`]), the boom still at tan θ = `tan_angle` with
+    /// undone (`lead_swing`), the boom still at tan θ = `tan_angle` with
     /// the hanging length `length_m` (m, > 0).
     pub fn led_factor(&self, length_m: T, lead_s: T, tan_angle: T) -> T {
         let g = self.gravity_m_s2;

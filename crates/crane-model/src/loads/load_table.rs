@@ -22,7 +22,7 @@
 //! and on the rated load anywhere in 0–90° (between the knots included).
 //!
 //! A term the limiter needs later is one more column: an index in
-//! [`column`], one line in [`LoadTable::row_at`]'s generator
+//! [`column`](mod@column), one line in [`LoadTable::row_at`]'s generator
 //! ([`generate_row`]) and a field of [`crate::loads::load_model::CycleTerms`].
 
 use crate::loads::load_model::{
@@ -65,7 +65,7 @@ pub mod column {
     pub const COUNT: usize = 13;
 }
 
-/// One row: the columns of [`column`] at one boom angle.
+/// One row: the columns of [`column`](mod@column) at one boom angle.
 pub type Row = [f32; column::COUNT];
 
 /// First knot of the table (degrees): the model reaches down to −1.63°
@@ -150,7 +150,7 @@ pub fn generate<const M: usize>(model: &CraneModel<f64, M>) -> Result<[Row; KNOT
 
 /// Writes a table as the Rust constant `name` (the generator example's output).
 pub fn write_const<W: core::fmt::Write>(rows: &[Row; KNOTS], name: &str, out: &mut W) -> core::fmt::Result {
-    writeln!(out, "/// The limiter's terms at {KNOTS} boom angles, {FIRST_DEG}° + k·{STEP_DEG}°; columns in [`column`].")?;
+    writeln!(out, "/// The limiter's terms at {KNOTS} boom angles, {FIRST_DEG}° + k·{STEP_DEG}°; columns in [`column`](mod@column).")?;
     writeln!(out, "pub const {name}: [Row; KNOTS] = [")?;
     for row in rows {
         write!(out, "    [")?;
@@ -163,7 +163,7 @@ pub fn write_const<W: core::fmt::Write>(rows: &[Row; KNOTS], name: &str, out: &m
     writeln!(out, "];")
 }
 
-/// The limiter's crane model on the controller: rows of [`column`]s at knots
+/// The limiter's crane model on the controller: rows of [`column`](mod@column)s at knots
 /// `STEP_DEG` apart, interpolated by a cubic (f32, no trigonometry, no
 /// multibody code). Angles outside the knots are out of reach (a FAULT).
 #[derive(Debug, Clone, Copy)]
