@@ -313,7 +313,7 @@ pub struct ReplayOutcome {
 pub fn replay_file(log: &Path, calibration: Option<&Path>) -> Result<ReplayOutcome> {
     use crate::cmd::replay::{for_each_record, load_calibration, new_replay};
 
-    let file = std::fs::File::open(log).with_context(|| format!("cannot open log {}", log.display()))?;
+    let file = crate::cmd::replay::open_log(log)?;
     let mut replay = new_replay(calibration.map(load_calibration).transpose()?)?;
     let mut recording = ReplayRecording::default();
     let mut events = Vec::new();

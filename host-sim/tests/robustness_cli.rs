@@ -517,6 +517,50 @@ fn a_quoted_log_replays_as_the_plain_one() {
     assert!(text(&out.stderr).contains("the row ends with a comma"), "{}", text(&out.stderr));
 }
 
+/// A log saved as UTF-16 (a spreadsheet's "Unicode text" export, either
+/// byte order) and a directory given for a log are refused with exit 1 by
+/// replay and calibrate alike, each named for what it is. Before, they read
+/// "line 1: not valid UTF-8" and "line 1: could not be read"; a log with a
+/// UTF-8 byte-order mark, or with CRLF line endings, replays as the plain one.
+#[test]
+fn a_utf16_log_and_a_directory_are_named_for_what_they_are() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = std::fs::read_to_string(example("safe_lift.csv")).unwrap();
+    let utf16 = |big: bool| -> Vec<u8> {
+        let mut bytes = if big { vec![0xfe, 0xff] } else { vec![0xff, 0xfe] };
+        for u in src.encode_utf16() {
+            bytes.extend(if big { u.to_be_bytes() } else { u.to_le_bytes() });
+        }
+        bytes
+    };
+    let cal = example("cal.json");
+    for (name, bytes) in [("le.csv", utf16(false)), ("be.csv", utf16(true))] {
+        let path = dir.path().join(name);
+        std::fs::write(&path, bytes).unwrap();
+        let out = replay(&path, &["--calibration", cal.to_str().unwrap()]);
+        assert_eq!(out.status.code(), Some(1), "{name}");
+        assert!(text(&out.stderr).contains("line 1: the log is UTF-16 text"), "{name}: {}", text(&out.stderr));
+        let out = bin().args(["calibrate", "--out"]).arg(dir.path().join("c.json")).arg(&path).output().unwrap();
+        assert_eq!(out.status.code(), Some(1), "{name}");
+        assert!(text(&out.stderr).contains("line 1: the log is UTF-16 text"), "{name}: {}", text(&out.stderr));
+    }
+    let out = replay(dir.path(), &["--calibration", cal.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(text(&out.stderr).contains("it is a directory, not a log file"), "{}", text(&out.stderr));
+    let out = bin().args(["calibrate", "--out"]).arg(dir.path().join("c.json")).arg(dir.path()).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    assert!(text(&out.stderr).contains("it is a directory, not a log file"), "{}", text(&out.stderr));
+
+    let args = ["--json", "--calibration", cal.to_str().unwrap()];
+    let plain = json(&replay(&example("safe_lift.csv"), &args));
+    let bom = dir.path().join("bom.csv");
+    std::fs::write(&bom, format!("\u{feff}{src}")).unwrap();
+    assert_eq!(json(&replay(&bom, &args)), plain);
+    let crlf = dir.path().join("crlf.csv");
+    std::fs::write(&crlf, src.replace('\n', "\r\n")).unwrap();
+    assert_eq!(json(&replay(&crlf, &args)), plain);
+}
+
 /// Runs `crane-sim args` with its stdout a pipe whose reader is already
 /// gone: every write fails with EPIPE.
 fn with_closed_stdout(args: &[&str]) -> Output {

@@ -26,7 +26,6 @@
 //!
 //! Exit codes: 0 written; 1 refused (above) or a log could not be read.
 
-use std::fs::File;
 use std::io::{BufReader, Write as _};
 use std::path::{Path, PathBuf};
 
@@ -94,7 +93,7 @@ struct Run {
 /// pressures the right way round.
 fn read_log(path: &Path, load_kg: f64) -> anyhow::Result<Log> {
     let name = path.display().to_string();
-    let file = File::open(path).with_context(|| format!("cannot open log {name}"))?;
+    let file = super::replay::open_log(path)?;
     let mut frames = Vec::new();
     let mut parser = LogParser::<f64>::new();
     let mut reader = BufReader::new(file);

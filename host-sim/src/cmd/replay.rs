@@ -79,6 +79,20 @@ pub fn load_calibration<T: crane_model::Real>(path: &Path) -> anyhow::Result<Cal
         .map_err(|e| anyhow::anyhow!("calibration {} refused: {e}", path.display()))
 }
 
+/// Opens a log file; a directory is refused by name (reading one fails with
+/// an error that says nothing of it).
+pub fn open_log(path: &Path) -> anyhow::Result<File> {
+    if path.is_dir() {
+        anyhow::bail!("cannot open log {}: it is a directory, not a log file", path.display());
+    }
+    File::open(path).with_context(|| format!("cannot open log {}", path.display()))
+}
+
+/// Whether `bytes` start with a UTF-16 byte-order mark (either order).
+pub fn starts_as_utf16(bytes: &[u8]) -> bool {
+    bytes.starts_with(&[0xff, 0xfe]) || bytes.starts_with(&[0xfe, 0xff])
+}
+
 /// Reads one line (without `\n`) as UTF-8; `Ok(None)` at the end.
 pub fn read_line<R: BufRead>(
     reader: &mut R,
@@ -91,9 +105,13 @@ pub fn read_line<R: BufRead>(
             if buf.last() == Some(&b'\n') {
                 buf.pop();
             }
-            String::from_utf8(std::mem::take(buf))
-                .map(Some)
-                .map_err(|_| LogErrorKind::NotUtf8)
+            String::from_utf8(std::mem::take(buf)).map(Some).map_err(|e| {
+                if starts_as_utf16(e.as_bytes()) {
+                    LogErrorKind::Utf16
+                } else {
+                    LogErrorKind::NotUtf8
+                }
+            })
         }
         Err(_) => Err(LogErrorKind::Unreadable),
     }
@@ -123,6 +141,9 @@ pub fn for_each_record<R: BufRead>(
     mut on_record: impl FnMut(&Record<f32>) -> anyhow::Result<()>,
 ) -> anyhow::Result<Option<LogError>> {
     let mut parser = LogParser::<f32>::new();
+    if reader.fill_buf().is_ok_and(starts_as_utf16) {
+        return Ok(Some(parser.reject_next_line(LogErrorKind::Utf16)));
+    }
     // One buffer for every line: a replay's cost is mostly reading the text.
     let mut line = String::new();
     Ok(loop {
@@ -262,8 +283,7 @@ impl Spacing {
 
 /// Runs the subcommand; returns the exit code.
 pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
-    let file =
-        File::open(&args.log).with_context(|| format!("cannot open log {}", args.log.display()))?;
+    let file = open_log(&args.log)?;
     if let Some(dir) = &args.report {
         std::fs::create_dir_all(dir).with_context(|| format!("cannot create report directory {}", dir.display()))?;
     }

@@ -142,6 +142,9 @@ pub enum LogErrorKind {
     NoSamples,
     /// The line is not valid UTF-8 (reported by the reader, which sees bytes).
     NotUtf8,
+    /// The log starts with a UTF-16 byte-order mark (a spreadsheet's
+    /// "Unicode text" export; reported by the reader).
+    Utf16,
     /// The line could not be read at all (reported by the reader).
     Unreadable,
 }
@@ -190,6 +193,9 @@ impl fmt::Display for LogError {
             LogErrorKind::TimeBackwards => write!(f, "field `{T_S}` goes backwards in time"),
             LogErrorKind::NoSamples => f.write_str("no data rows after the header"),
             LogErrorKind::NotUtf8 => f.write_str("not valid UTF-8"),
+            LogErrorKind::Utf16 => f.write_str(
+                "the log is UTF-16 text (a spreadsheet's \"Unicode text\" export), not UTF-8: save it as CSV in UTF-8 (docs/log-format.md)",
+            ),
             LogErrorKind::Unreadable => f.write_str("could not be read"),
         }
     }
