@@ -60,7 +60,8 @@ pub fn state_code(state: LimiterState) -> u8 {
 
 /// The fault's class in [`EventKind::StateChanged`] records: 0 none,
 /// 1 sensor, 2 load estimate, 3 capacity, 4 clock, 5 implausible load,
-/// 6 outputs, 7 signal chain settling after a fault.
+/// 6 outputs, 7 signal chain settling after a fault, 8 switched on while the
+/// boom moved.
 pub fn fault_code(fault: Option<Fault>) -> u8 {
     match fault {
         None => 0,
@@ -71,6 +72,7 @@ pub fn fault_code(fault: Option<Fault>) -> u8 {
         Some(Fault::ImplausibleLoad) => 5,
         Some(Fault::Output) => 6,
         Some(Fault::Settling) => 7,
+        Some(Fault::StartedMoving) => 8,
     }
 }
 

@@ -27,6 +27,9 @@ pub enum Fault {
     /// [`crate::cycle::SETTLE_S`] ago with the boom moving: the filters'
     /// start-up is no reading yet.
     Settling,
+    /// Switched on while the boom moved: no weighing until it has stopped
+    /// ([`crate::cycle::power_up`]).
+    StartedMoving,
     /// The outputs could not be driven.
     Output,
 }
@@ -42,6 +45,7 @@ impl fmt::Display for Fault {
             Fault::Clock(c) => write!(f, "{c}"),
             Fault::ImplausibleLoad => f.write_str("load estimate implausibly negative"),
             Fault::Settling => f.write_str("signal chain settling after a fault"),
+            Fault::StartedMoving => f.write_str("switched on while the boom moved: no weighing until it stops"),
             Fault::Output => f.write_str("output driver failed"),
         }
     }

@@ -653,6 +653,23 @@ impl<T: Real> StaticLoadBank<T> {
         self.period_mean.clear();
     }
 
+    /// Starts again as a bank switched on at rest: every rope hangs still,
+    /// nothing is held and the averages start afresh (after a limiter
+    /// switched on in motion has seen the boom stop,
+    /// [`crate::cycle::power_up`]). The same as [`Self::reset`] but for the
+    /// boom's present motion, which it keeps, in a fifth of the flash.
+    pub fn start_at_rest(&mut self) {
+        self.moved = false;
+        self.ropes.still();
+        self.paid_out.still();
+        self.restart_averages();
+        self.hold_kg = None;
+        self.slow_at_stop = None;
+        self.last_kg = None;
+        self.after_move = false;
+        self.light_at_stop = false;
+    }
+
     /// Forgets swing and averages (after a sensor fault broke the angle).
     pub fn reset(&mut self) {
         *self = Self::new(self.geometry).with_lead_s(self.lead_s);

@@ -164,9 +164,11 @@ fn learn_log_with(log: &Log, lag_s: f64, keep: bool, steady: SteadyMotion<f64>) 
     for (line, frame) in &log.frames {
         let report = limiter.step_frame(frame);
         // An implausibly negative load is the limiter's verdict on an
-        // uncalibrated estimate; the learner needs the measurement itself.
+        // uncalibrated estimate, and a run recorded from the middle of a move
+        // has no weighing at rest to start from; the learner needs neither,
+        // only the measurement itself.
         match (report.fault, report.measurement) {
-            (None | Some(Fault::ImplausibleLoad), Some(m)) => {
+            (None | Some(Fault::ImplausibleLoad | Fault::StartedMoving), Some(m)) => {
                 learner
                     .observe(limiter.model(), &m)
                     .map_err(|e| anyhow::anyhow!("{name}: line {line}: model: {e}"))?;

@@ -37,6 +37,7 @@
 //! the load and rating (stages 3–4) and the sequencing are here.
 
 pub mod config;
+pub mod power_up;
 pub mod report;
 mod signal_chain;
 
@@ -153,6 +154,9 @@ pub struct Limiter<T, M> {
     negative_load: NegativeLoadMonitor<T>,
     state: Option<LimiterState>,
     output_failed: bool,
+    /// Whether the limiter was switched on while the boom moved
+    /// ([`power_up`]).
+    power_up: power_up::PowerUp<T>,
 }
 
 impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
@@ -185,6 +189,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             negative_load: NegativeLoadMonitor::new(config.negative_load),
             state: None,
             output_failed: false,
+            power_up: power_up::PowerUp::new(),
             model,
             config,
         })
@@ -305,6 +310,18 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
                     Ok(()) => {
                         let m = self.measure(p1, p2, angle, dt_s);
                         measurement = Some(m);
+                        // Switched on in motion: no weighing until the boom
+                        // stops, and then a fresh bank (see `power_up`).
+                        let started_moving = match self.power_up.update(angle.degrees(), m.direction == Direction::Still, dt_s) {
+                            power_up::PowerUpCheck::InMotion => true,
+                            power_up::PowerUpCheck::Stopped => {
+                                if let Some(bank) = self.bank.as_mut() {
+                                    bank.start_at_rest();
+                                }
+                                false
+                            }
+                            power_up::PowerUpCheck::Clear => false,
+                        };
                         // After a restart the filters start settled: for a
                         // moving boom their start-up reads as an acceleration
                         // the force never had. Not a reading until it passed.
@@ -318,6 +335,8 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
                                     .implausible(e.load_kg, m.boom.angle_rad, dt_s);
                                 if negative {
                                     Some(Fault::ImplausibleLoad)
+                                } else if started_moving {
+                                    Some(Fault::StartedMoving)
                                 } else {
                                     settling.then_some(Fault::Settling)
                                 }
