@@ -326,10 +326,25 @@ fn lowest_onset_u(points: &[Point]) -> Option<f64> {
     lowest
 }
 
-/// The samples at a true u of 1.05 or more that are neither OVERLOAD nor
-/// FAULT: a cut that came late or was released.
+/// Whether the limiter cuts the moment-increasing motions at `q`: OVERLOAD
+/// or FAULT.
+fn cut(q: &Point) -> bool {
+    matches!(q.state, LimiterState::Overload | LimiterState::Fault)
+}
+
+/// The samples at a true u of 1.05 or more that are not [`cut`]: a cut that
+/// came late or was released.
 fn uncut(points: &[Point]) -> impl Iterator<Item = &Point> {
-    points.iter().filter(|q| q.u >= 1.05 && !matches!(q.state, LimiterState::Overload | LimiterState::Fault))
+    points.iter().filter(|q| q.u >= 1.05 && !cut(q))
+}
+
+/// From when on `ok` holds to the end of `after` (s after `since_s`);
+/// `None` when it does not hold at the end.
+fn held_from(after: &[&Point], since_s: f64, ok: impl Fn(&Point) -> bool) -> Option<f64> {
+    match after.iter().rposition(|q| !ok(q)) {
+        None => Some(0.0),
+        Some(i) => after.get(i + 1).map(|q| q.t - since_s),
+    }
 }
 
 /// The log of `program` at [`RATE_HZ`], on the crane with `seals` and the
@@ -1220,17 +1235,13 @@ fn load_added_at_rest_on_the_paid_out_rope(precision: Precision, moves: &[(f64, 
                 let lifted = HOLD_BEFORE_S + 10.0 + at_rest_s + TAKE_UP_S;
                 let after: Vec<&Point> = pts.iter().filter(|q| q.t >= lifted).collect();
                 let seen = after.iter().find(|q| q.ratio >= 1.0 / 1.1).map(|q| q.t - lifted);
-                let cut = |q: &Point| matches!(q.state, LimiterState::Overload | LimiterState::Fault);
-                let held_from = match after.iter().rposition(|q| !cut(q)) {
-                    None => Some(0.0),
-                    Some(i) => after.get(i + 1).map(|q| q.t - lifted),
-                };
+                let cut_from = held_from(&after, lifted, cut);
                 let first = first_overload(&pts);
                 println!(
                     "{name:<74} seen {} s, first OVERLOAD {}, cut from {} s to the end",
                     seen.map_or("never".into(), |s| format!("{s:+.2}")),
                     first.map_or("none".into(), |f| format!("at {:+.2} s, true u {:.3}", f.0 - lifted, f.1)),
-                    held_from.map_or("never".into(), |s| format!("{s:+.2}"))
+                    cut_from.map_or("never".into(), |s| format!("{s:+.2}"))
                 );
                 if frac < 1.0 {
                     if let Some((t, u)) = first {
@@ -1242,8 +1253,8 @@ fn load_added_at_rest_on_the_paid_out_rope(precision: Precision, moves: &[(f64, 
                 } else {
                     match first {
                         Some((t, u)) if t <= lifted + 1.0 && u >= 1.0 / 1.1 => {
-                            if held_from.is_none_or(|h| h > t - lifted + 0.005) {
-                                failures.push(format!("{name}: OVERLOAD at {:+.2} s released, cut to the end only from {held_from:?} s", t - lifted));
+                            if cut_from.is_none_or(|h| h > t - lifted + 0.005) {
+                                failures.push(format!("{name}: OVERLOAD at {:+.2} s released, cut to the end only from {cut_from:?} s", t - lifted));
                             }
                         }
                         other => failures.push(format!("{name}: first OVERLOAD {other:?}, take-up ends at {lifted:.2} s")),
@@ -1364,14 +1375,9 @@ fn load_added_and_weighed_by_its_period(precision: Precision, cases: &[(f64, f64
                 let pts = replay_rows(&rows, seals, precision);
                 let lifted = HOLD_BEFORE_S + 10.0 + at_rest_s + take_up_s;
                 let after: Vec<&Point> = pts.iter().filter(|q| q.t >= lifted).collect();
-                // From when on `ok` holds to the end (s after the take-up).
-                let held_from = |ok: &dyn Fn(&Point) -> bool| match after.iter().rposition(|q| !ok(q)) {
-                    None => Some(0.0),
-                    Some(i) => after.get(i + 1).map(|q| q.t - lifted),
-                };
                 let fault = |q: &Point| q.state == LimiterState::Fault;
-                let seen = held_from(&|q: &Point| fault(q) || q.ratio >= 1.0 / 1.1);
-                let cut = held_from(&|q: &Point| fault(q) || q.state == LimiterState::Overload);
+                let seen = held_from(&after, lifted, |q| fault(q) || q.ratio >= 1.0 / 1.1);
+                let cut_from = held_from(&after, lifted, cut);
                 let u_high = after.iter().filter(|q| !fault(q)).map(|q| q.ratio * q.u).fold(0.0, f64::max);
                 let (low, high) = after
                     .iter()
@@ -1388,7 +1394,7 @@ fn load_added_and_weighed_by_its_period(precision: Precision, cases: &[(f64, f64
                 println!(
                     "{name:<78} P {period:.1} s: >= true/1.1 from {} s, cut from {} s (bound {bound:.1} s), first OVERLOAD {}, in OVERLOAD {in_overload_s:.2} s, highest estimated u {u_high:.3}",
                     seen.map_or("never".into(), |s| format!("{s:+.2}")),
-                    cut.map_or("never".into(), |s| format!("{s:+.2}")),
+                    cut_from.map_or("never".into(), |s| format!("{s:+.2}")),
                     first.map_or("none".into(), |f| format!("at {:+.2} s, true u {:.3}", f.0 - lifted, f.1))
                 );
                 if let (true, true, Some((t, u))) = (frac < 1.0, ninety_clear, first) {
@@ -1396,7 +1402,7 @@ fn load_added_and_weighed_by_its_period(precision: Precision, cases: &[(f64, f64
                 }
                 if frac > 1.0 {
                     // An overload at rest stands: once cut, cut to the end.
-                    if let (Some((t, _)), Some(c)) = (first.filter(|f| f.0 >= lifted), cut) {
+                    if let (Some((t, _)), Some(c)) = (first.filter(|f| f.0 >= lifted), cut_from) {
                         if c > t - lifted + 0.005 {
                             failures.push(format!("{name}: OVERLOAD at {:+.2} s released, cut again only from {c:+.2} s", t - lifted));
                         }
@@ -1404,8 +1410,8 @@ fn load_added_and_weighed_by_its_period(precision: Precision, cases: &[(f64, f64
                     if seen.is_none_or(|s| s > bound) {
                         failures.push(format!("{name}: estimate at 1/1.1 of the true load from {seen:?} s, bound {bound:.1} s"));
                     }
-                    if cut.is_none_or(|s| s > bound) {
-                        failures.push(format!("{name}: cut from {cut:?} s, bound {bound:.1} s"));
+                    if cut_from.is_none_or(|s| s > bound) {
+                        failures.push(format!("{name}: cut from {cut_from:?} s, bound {bound:.1} s"));
                     }
                 }
             }
@@ -2021,7 +2027,6 @@ fn switched_on_during_a_lowering() {
                     let pts = replay_rows(&rows[on..], seals, Precision::F64);
                     let name = format!("{rope:?} {seals:?}, rated at {rated_at}, switched on at {start_s} s (true u {:.3})", pts[0].u);
                     let watched = start_s + 0.3;
-                    let cut = |q: &Point| matches!(q.state, LimiterState::Overload | LimiterState::Fault);
                     if let Some(q) = uncut(&pts).find(|q| q.t >= watched) {
                         failures.push(format!("{name}: uncut at {:.2} s, true u {:.3}", q.t, q.u));
                     }

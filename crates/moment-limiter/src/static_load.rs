@@ -659,15 +659,22 @@ impl<T: Real> StaticLoadBank<T> {
     /// [`crate::cycle::power_up`]). The same as [`Self::reset`] but for the
     /// boom's present motion, which it keeps, in a fifth of the flash.
     pub fn start_at_rest(&mut self) {
-        self.moved = false;
-        self.ropes.still();
-        self.paid_out.still();
+        self.hang_still();
         self.restart_averages();
         self.hold_kg = None;
         self.slow_at_stop = None;
         self.last_kg = None;
         self.after_move = false;
         self.light_at_stop = false;
+    }
+
+    /// Every rope's load hanging still, as in a bank that has not seen the
+    /// boom luff: the ropes agree again (a hook left empty, or a limiter
+    /// switched on in motion that has seen the boom stop).
+    fn hang_still(&mut self) {
+        self.moved = false;
+        self.ropes.still();
+        self.paid_out.still();
     }
 
     /// Forgets swing and averages (after a sensor fault broke the angle).
@@ -693,9 +700,7 @@ impl<T: Real> StaticLoadBank<T> {
         // and a light hook the ropes hang still, as at power-up (see the
         // module doc).
         if self.moved && self.light_s >= T::lit(EMPTY_HOOK_S) {
-            self.moved = false;
-            self.ropes.still();
-            self.paid_out.still();
+            self.hang_still();
         }
         let trig = angle_rad.sin_cos_own();
         let tip = BoomTip::new(trig, self.geometry.boom_length_m, drive_rate, drive_accel, dt_s);
