@@ -128,6 +128,11 @@ pub enum LogErrorKind {
     /// The row has more fields than the header, and every one too many is
     /// empty: the row ends with a comma.
     TrailingComma,
+    /// The row has more fields than the header or a field that is not a
+    /// number, writes no decimal point, and has a field that only a decimal
+    /// comma explains (`0,05` splits into `0` and `05`; `"45,3"` is quoted): a
+    /// spreadsheet's export in a locale that writes decimal commas.
+    DecimalCommas,
     /// This field is empty.
     EmptyField(&'static str),
     /// This field is not a number.
@@ -183,6 +188,9 @@ impl fmt::Display for LogError {
             LogErrorKind::TooManyFields => f.write_str("more fields than the header has columns"),
             LogErrorKind::TrailingComma => f.write_str(
                 "more fields than the header has columns: the row ends with a comma (the header does not)",
+            ),
+            LogErrorKind::DecimalCommas => f.write_str(
+                "more fields than the header has columns: the numbers look written with decimal commas (`0,05`); a log writes decimal points (`0.05`) and separates fields with commas (docs/log-format.md)",
             ),
             LogErrorKind::EmptyField(c) => write!(f, "field `{c}` is empty"),
             LogErrorKind::NotANumber(c) => write!(f, "field `{c}` is not a number"),
@@ -307,19 +315,30 @@ impl<T: Real> LogParser<T> {
                 if field.is_empty() {
                     return Err(err(LogErrorKind::EmptyField(column.name())));
                 }
+                // `"45,3"` splits into `"45` and `3"`: name the decimal comma.
+                let named = |kind| match kind {
+                    LogErrorKind::NotANumber(_) if looks_decimal_comma(trimmed) => err(LogErrorKind::DecimalCommas),
+                    kind => err(kind),
+                };
                 if column == Column::Time {
-                    time_us = Some(parse_time_us(field).map_err(err)?);
+                    time_us = Some(parse_time_us(field).map_err(named)?);
                     continue;
                 }
                 let v: f64 = field
                     .parse()
-                    .map_err(|_| err(LogErrorKind::NotANumber(column.name())))?;
+                    .map_err(|_| named(LogErrorKind::NotANumber(column.name())))?;
                 *slot = Some(T::lit(v));
             }
         }
         if let Some(extra) = fields.next() {
             let trailing = extra.trim().is_empty() && fields.all(|f| f.trim().is_empty());
-            return Err(err(if trailing { LogErrorKind::TrailingComma } else { LogErrorKind::TooManyFields }));
+            return Err(err(if trailing {
+                LogErrorKind::TrailingComma
+            } else if looks_decimal_comma(trimmed) {
+                LogErrorKind::DecimalCommas
+            } else {
+                LogErrorKind::TooManyFields
+            }));
         }
         let missing = |name| err(LogErrorKind::MissingField(name));
         let [_, p1, p2, angle, true_load] = values;
@@ -438,6 +457,26 @@ pub fn parse_time_us(text: &str) -> Result<i64, LogErrorKind> {
     Ok(if negative { -us } else { us })
 }
 
+/// Whether a row that has too many fields reads as numbers written with
+/// decimal commas: no decimal point anywhere, and a field that starts with a
+/// zero followed by a digit (the fraction of `0,05`) or a quoted field holding
+/// a comma (`"45,3"`). A row of plain integers (`0,1,2,3,4,5`) is not one.
+fn looks_decimal_comma(row: &str) -> bool {
+    if row.contains('.') {
+        return false;
+    }
+    let fraction = row.split(',').any(|f| {
+        let b = f.trim().trim_matches('"').as_bytes();
+        b.len() >= 2 && b.first() == Some(&b'0') && b.iter().all(u8::is_ascii_digit)
+    });
+    let quoted_comma = row
+        .split('"')
+        .skip(1)
+        .step_by(2)
+        .any(|inside| inside.contains(','));
+    fraction || quoted_comma
+}
+
 /// A field without its surrounding spaces and, if it is wrapped in double
 /// quotes, without them (and the spaces inside).
 fn unquote(field: &str) -> &str {
@@ -527,8 +566,11 @@ mod tests {
             }
         );
         assert_eq!(r[0].true_load_kg, None);
-        // Quotes do not make text a number, nor a decimal comma a point.
+        // Quotes do not make text a number, nor a decimal comma a point (and
+        // the error says which it is).
         let e = parse_all("t_s,p1_bar,p2_bar,boom_angle_deg\n0,\"6,0\",5,45\n").unwrap_err();
+        assert_eq!(e.kind, LogErrorKind::DecimalCommas);
+        let e = parse_all("t_s,p1_bar,p2_bar,boom_angle_deg\n0,\"six\",5,45\n").unwrap_err();
         assert_eq!(e.kind, LogErrorKind::NotANumber(P1_BAR));
         let e = parse_all("\"T_S\",p1_bar,p2_bar,boom_angle_deg\n0,1,2,3\n").unwrap_err();
         assert_eq!(e.kind, LogErrorKind::ColumnCase(T_S));
@@ -632,6 +674,20 @@ mod tests {
         assert_eq!(e.kind, LogErrorKind::TooManyFields);
         let e = parse_all(&format!("{h}0,,2,3,4\n")).unwrap_err();
         assert_eq!(e.kind, LogErrorKind::EmptyField(P1_BAR));
+    }
+
+    #[test]
+    fn a_row_with_decimal_commas_is_named_as_such() {
+        let h = "t_s,p1_bar,p2_bar,boom_angle_deg\n";
+        for row in ["0,05,60,5,4,2,45,3", "\"0,01\",\"60,5\",\"4,2\",\"45,3\"", "1,5,60,5,4,45,3,\"1,0\""] {
+            let e = parse_all(&format!("{h}{row}\n")).unwrap_err();
+            assert_eq!((e.line, e.kind), (2, LogErrorKind::DecimalCommas), "{row}");
+            assert!(e.to_string().contains("decimal commas"), "{e}");
+        }
+        // Integers, or a row with a decimal point, have too many fields only.
+        for row in ["0,1,2,3,4,5", "0.05,60,5,4,45", "0,05.5,60,4,45"] {
+            assert_eq!(parse_all(&format!("{h}{row}\n")).unwrap_err().kind, LogErrorKind::TooManyFields, "{row}");
+        }
     }
 
     #[test]
