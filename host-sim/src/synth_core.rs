@@ -50,6 +50,16 @@ pub enum FrictionLaw {
         /// Force per piston speed (N·s/m).
         per_m_s: f64,
     },
+    /// Stribeck: the seal breaks away at a higher force than it slides at,
+    /// F_s + (F_b − F_s)·exp(−(v/v_s)²).
+    Stribeck {
+        /// Sliding force, at speeds well above `speed_m_s` (N).
+        sliding_n: f64,
+        /// Breakaway force, at the slowest motion (N).
+        breakaway_n: f64,
+        /// Stribeck speed of the piston (m/s).
+        speed_m_s: f64,
+    },
 }
 
 impl FrictionLaw {
@@ -59,6 +69,10 @@ impl FrictionLaw {
             FrictionLaw::Constant { force_n } => force_n,
             FrictionLaw::Seal { base_n, per_force } => base_n + per_force * piston_force_n.abs(),
             FrictionLaw::Viscous { base_n, per_m_s } => base_n + per_m_s * piston_speed_m_s.abs(),
+            FrictionLaw::Stribeck { sliding_n, breakaway_n, speed_m_s } => {
+                let x = piston_speed_m_s / speed_m_s.max(1e-9);
+                sliding_n + (breakaway_n - sliding_n) * (-x * x).exp()
+            }
         }
         .max(0.0)
     }
@@ -93,6 +107,10 @@ pub struct SensorModel {
     /// Time constant with which friction held at standstill relaxes (s): the seal
     /// stays stuck in the state the motion left it; 0 releases it at once.
     pub standstill_release_s: f64,
+    /// Boom rate (°/s) over which the friction turns from one direction's to
+    /// the other's: the friction while moving is its law times
+    /// tanh(rate / this).
+    pub friction_onset_deg_s: f64,
     /// Standard deviation of the pressure noise (bar).
     pub noise_bar: f64,
     /// Standard deviation of the angle noise (deg).
@@ -119,6 +137,7 @@ impl SensorModel {
             friction_up: FrictionLaw::Constant { force_n: 12_000.0 },
             friction_down: FrictionLaw::Constant { force_n: 8_000.0 },
             standstill_release_s: 0.0,
+            friction_onset_deg_s: 0.2,
             noise_bar: 0.3,
             noise_deg: 0.03,
             pendulum: PendulumSensor::SecondOrder { hz: 2.0, damping: 0.7 },
@@ -239,9 +258,9 @@ pub fn synthesize(
     let mut out = Vec::with_capacity(hold + samples.len());
     for (k, (s, rate_deg_s)) in rows.enumerate() {
         let t = k as f64 * dt_s;
-        // Friction while moving follows its law, smoothed over ±0.2 °/s; what the
-        // motion leaves at standstill relaxes with the seal's release time.
-        let motion = (rate_deg_s / 0.2).tanh();
+        // Friction while moving follows its law, smoothed over ±onset; what
+        // the motion leaves at standstill relaxes with the seal's release time.
+        let motion = (rate_deg_s / sensors.friction_onset_deg_s.max(1e-6)).tanh();
         let moving = if motion >= 0.0 {
             sensors.friction_up.force_n(s.reactions.piston_force_n, s.actuator_rate_m_s) * motion
         } else {

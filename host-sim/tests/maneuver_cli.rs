@@ -109,4 +109,25 @@ fn synth_friction_law_and_first_order_pendulum_reach_the_log() {
     // ζ = 0.7 pendulum 2ζ/ωn ≈ 0.11 s behind.
     let behind = at(&lag, 16.0)[3] - c[3];
     assert!(behind < -0.15 && behind > -0.5, "first-order lag reads {behind}° against the default");
+    // Stribeck, sliding at the default 12 kN and breaking away at 18 kN under
+    // 10 mm/s: the constant law's force mid-move (0.03 m/s), more in the
+    // ramps, where the piston is slow (2.8 kN at most: the friction only
+    // turns on over the boom's first 0.2 °/s, by then the piston runs at
+    // 4 mm/s).
+    let stribeck = run("st.csv", &["--friction-law", "stribeck", "--friction-up-b", "18000", "--friction-down-b", "12000", "--stribeck-speed-m-s", "0.01"]);
+    let mid_n = (at(&stribeck, 16.0)[1] - c[1]) * area_bar;
+    assert!(mid_n.abs() < 300.0, "Stribeck − constant mid-move = {mid_n} N");
+    let ramps_n = stribeck.iter().zip(&constant).map(|(a, b)| (a[1] - b[1]) * area_bar).fold(f64::MIN, f64::max);
+    assert!(ramps_n > 2_000.0 && ramps_n < 4_000.0, "Stribeck − constant in the ramps: {ramps_n} N");
+    // A friction turning over ±2 °/s instead of ±0.2 °/s: the 30 s move
+    // (1.3 °/s) carries tanh(1.3/2) ≈ 0.6 of the 12 kN.
+    let blunt = run("b.csv", &["--friction-onset-deg-s", "2"]);
+    let less_n = (c[1] - at(&blunt, 16.0)[1]) * area_bar;
+    assert!(less_n > 3_000.0 && less_n < 6_500.0, "constant − blunt onset mid-move = {less_n} N");
+    let refused = crane_sim(&["synth", "--case", "3300kg-30s-cycloidal-up", "--friction-onset-deg-s", "0", "--out", dir.path().join("x.csv").to_str().expect("path")]);
+    assert_eq!(refused.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&refused.stderr).contains("--friction-onset-deg-s must be in (0, 5]"));
+    let refused = crane_sim(&["synth", "--case", "3300kg-30s-cycloidal-up", "--friction-law", "stribeck", "--out", dir.path().join("x.csv").to_str().expect("path")]);
+    assert_eq!(refused.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&refused.stderr).contains("must be at least the sliding force"), "{}", String::from_utf8_lossy(&refused.stderr));
 }

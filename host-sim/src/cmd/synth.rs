@@ -28,6 +28,9 @@ pub enum FrictionArg {
     Seal,
     /// Viscous a + c·|v|: a = --friction-*-n, c = --friction-*-b (N per m/s of piston speed).
     Viscous,
+    /// Stribeck F_s + (F_b − F_s)·exp(−(v/v_s)²): sliding F_s = --friction-*-n, breakaway
+    /// F_b = --friction-*-b (N), v_s = --stribeck-speed-m-s.
+    Stribeck,
 }
 
 /// Angle sensor dynamics on the command line.
@@ -66,15 +69,22 @@ pub struct SynthArgs {
     /// Cylinder friction while lowering (N; the constant part): the piston force reads lower.
     #[arg(long, default_value_t = 8_000.0)]
     friction_down_n: f64,
-    /// Seal: fraction of |F|; viscous: N per m/s of piston speed (raising).
+    /// Seal: fraction of |F|; viscous: N per m/s of piston speed; Stribeck: breakaway force, N (raising).
     #[arg(long, default_value_t = 0.0)]
     friction_up_b: f64,
-    /// Seal: fraction of |F|; viscous: N per m/s of piston speed (lowering).
+    /// Seal: fraction of |F|; viscous: N per m/s of piston speed; Stribeck: breakaway force, N (lowering).
     #[arg(long, default_value_t = 0.0)]
     friction_down_b: f64,
     /// Time constant with which friction stuck at standstill relaxes (s; 0: at once).
     #[arg(long, default_value_t = 0.0)]
     standstill_release_s: f64,
+    /// Stribeck speed of the piston (m/s; --friction-law stribeck).
+    #[arg(long, default_value_t = 0.005)]
+    stribeck_speed_m_s: f64,
+    /// Boom rate over which the friction turns from one direction's to the other's (°/s): the
+    /// friction while moving is its law times tanh(rate / this).
+    #[arg(long, default_value_t = 0.2)]
+    friction_onset_deg_s: f64,
     /// Standard deviation of the pressure noise (bar).
     #[arg(long, default_value_t = 0.3)]
     noise_bar: f64,
@@ -113,7 +123,7 @@ pub struct SynthArgs {
     out: PathBuf,
 }
 
-fn law(kind: FrictionArg, a: f64, b: f64) -> Result<FrictionLaw> {
+fn law(kind: FrictionArg, a: f64, b: f64, stribeck_speed_m_s: f64) -> Result<FrictionLaw> {
     if !(a >= 0.0 && a.is_finite() && b >= 0.0 && b.is_finite()) {
         bail!("friction values must be finite and ≥ 0");
     }
@@ -121,6 +131,15 @@ fn law(kind: FrictionArg, a: f64, b: f64) -> Result<FrictionLaw> {
         FrictionArg::Constant => FrictionLaw::Constant { force_n: a },
         FrictionArg::Seal => FrictionLaw::Seal { base_n: a, per_force: b },
         FrictionArg::Viscous => FrictionLaw::Viscous { base_n: a, per_m_s: b },
+        FrictionArg::Stribeck => {
+            if !(stribeck_speed_m_s > 0.0 && stribeck_speed_m_s <= 1.0) {
+                bail!("--stribeck-speed-m-s must be in (0, 1] m/s");
+            }
+            if b < a {
+                bail!("Stribeck friction: the breakaway force --friction-*-b ({b} N) must be at least the sliding force --friction-*-n ({a} N)");
+            }
+            FrictionLaw::Stribeck { sliding_n: a, breakaway_n: b, speed_m_s: stribeck_speed_m_s }
+        }
     })
 }
 
@@ -167,15 +186,19 @@ pub fn run(args: SynthArgs) -> Result<u8> {
     if !(args.standstill_release_s >= 0.0 && args.standstill_release_s <= 60.0) {
         bail!("--standstill-release-s must be in [0, 60] s");
     }
+    if !(args.friction_onset_deg_s > 0.0 && args.friction_onset_deg_s <= 5.0) {
+        bail!("--friction-onset-deg-s must be in (0, 5] °/s");
+    }
     let (options, dt) = synth_core::options_for_rate(args.rate_hz);
     let model = thesis_model()?;
     let samples = synth_core::simulate_program(&model, &program, &options)
         .map_err(|e| anyhow::anyhow!("simulation failed: {e}"))?;
     let sensors = SensorModel {
         seed: args.seed,
-        friction_up: law(args.friction_law, args.friction_up_n, args.friction_up_b)?,
-        friction_down: law(args.friction_law, args.friction_down_n, args.friction_down_b)?,
+        friction_up: law(args.friction_law, args.friction_up_n, args.friction_up_b, args.stribeck_speed_m_s)?,
+        friction_down: law(args.friction_law, args.friction_down_n, args.friction_down_b, args.stribeck_speed_m_s)?,
         standstill_release_s: args.standstill_release_s,
+        friction_onset_deg_s: args.friction_onset_deg_s,
         noise_bar: args.noise_bar,
         noise_deg: args.noise_deg,
         pendulum,
@@ -189,8 +212,8 @@ pub fn run(args: SynthArgs) -> Result<u8> {
     writeln!(f, "# crane-sim synth: {title}, {}°..{}°", program.start_deg, program.end_deg())?;
     writeln!(
         f,
-        "# flexible model (12 elements, 4 modes), {} Hz, friction up {:?} / down {:?}, standstill release {} s, noise {} bar / {} deg, angle sensor {:?}, offsets {} deg / {} bar, seed {}",
-        args.rate_hz, sensors.friction_up, sensors.friction_down, args.standstill_release_s, args.noise_bar, args.noise_deg, pendulum, args.angle_offset_deg, args.pressure_offset_bar, args.seed
+        "# flexible model (12 elements, 4 modes), {} Hz, friction up {:?} / down {:?}, standstill release {} s, friction onset {} deg/s, noise {} bar / {} deg, angle sensor {:?}, offsets {} deg / {} bar, seed {}",
+        args.rate_hz, sensors.friction_up, sensors.friction_down, args.standstill_release_s, args.friction_onset_deg_s, args.noise_bar, args.noise_deg, pendulum, args.angle_offset_deg, args.pressure_offset_bar, args.seed
     )?;
     writeln!(f, "{}", synth_core::LOG_HEADER)?;
     for row in &rows {
