@@ -10,7 +10,8 @@
 //! not built on check it from outside: a friction growing with the piston's
 //! speed, a seal that breaks away at twice its sliding force (Stribeck),
 //! seals that stay stuck at standstill, a friction that turns on over
-//! ±0.02 °/s or ±1 °/s of boom rate, logs at 50 Hz and 20 Hz, and a
+//! ±0.02 °/s or ±1 °/s of boom rate, logs at 50 Hz and 20 Hz, slower or
+//! less damped pendulums, three times the sensor noise, and a
 //! lift-off whose bounce is an ideal one of 1–2 Hz instead of the
 //! simulator's. The limiter is calibrated
 //! from the same crane's unloaded 10 s up and down runs (thesis rope), as
@@ -95,8 +96,11 @@ fn sensors(seals: Seals, seed: u32) -> SensorModel {
     let pendulum = SENSOR_LAG_S.with(|l| l.get()).map_or(standard.pendulum, |tau_s| synth_core::PendulumSensor::FirstOrder { tau_s });
     let angle_offset_deg = ANGLE_OFFSET_DEG.with(|o| o.get());
     let standstill_release_s = STANDSTILL_RELEASE_S.with(|o| o.get());
+    let pendulum = PENDULUM_2ND.with(|p| p.get()).map_or(pendulum, |(hz, damping)| synth_core::PendulumSensor::SecondOrder { hz, damping });
+    let noise_bar = NOISE_BAR.with(|n| n.get()).unwrap_or(standard.noise_bar);
+    let noise_deg = NOISE_DEG.with(|n| n.get()).unwrap_or(standard.noise_deg);
     let friction_onset_deg_s = FRICTION_ONSET_DEG_S.with(|o| o.get());
-    SensorModel { seed, friction_up: up, friction_down: down, pendulum, angle_offset_deg, standstill_release_s, friction_onset_deg_s, ..standard }
+    SensorModel { seed, friction_up: up, friction_down: down, pendulum, angle_offset_deg, standstill_release_s, friction_onset_deg_s, noise_bar, noise_deg, ..standard }
 }
 
 thread_local! {
@@ -115,6 +119,13 @@ thread_local! {
     static FRICTION_ONSET_DEG_S: std::cell::Cell<f64> = const { std::cell::Cell::new(0.2) };
     /// The logs' sample rate (Hz).
     static LOG_RATE_HZ: std::cell::Cell<f64> = const { std::cell::Cell::new(RATE_HZ) };
+    /// The angle sensor as a pendulum of this natural frequency (Hz) and
+    /// damping ratio instead of synth's standard one (2 Hz, 0.7).
+    static PENDULUM_2ND: std::cell::Cell<Option<(f64, f64)>> = const { std::cell::Cell::new(None) };
+    /// The pressure noise's standard deviation (bar) instead of synth's 0.3.
+    static NOISE_BAR: std::cell::Cell<Option<f64>> = const { std::cell::Cell::new(None) };
+    /// The angle noise's standard deviation (°) instead of synth's 0.03.
+    static NOISE_DEG: std::cell::Cell<Option<f64>> = const { std::cell::Cell::new(None) };
 }
 
 /// The rope of a scenario.
@@ -290,8 +301,9 @@ fn replay_with<T: Real, M: HookLoadModel<T> + Clone>(model_l: &M, cal: Calibrati
 
 /// The crane a calibration is of: its sensor's lag, whether the lag is
 /// learned, its friction law, its pendulum's zero error, its seals' release
-/// and friction onset, and the logs' sample rate.
-type CraneKey = (Option<u64>, bool, Seals, [u64; 4]);
+/// and friction onset, the logs' sample rate, the pendulum's dynamics and
+/// the sensors' noise.
+type CraneKey = (Option<u64>, bool, Seals, [u64; 8]);
 
 fn replay(sc: &Scenario, precision: Precision) -> Vec<Point> {
     replay_rows(&sc.rows(), sc.seals, precision)
@@ -308,7 +320,9 @@ fn replay_rows(rows: &[SynthRow], seals: Seals, precision: Precision) -> Vec<Poi
 
 /// The crane's calibration (see [`calibration_with`]), learned once per crane.
 fn cached<T: Copy>(cache: &Mutex<Vec<(CraneKey, T)>>, seals: Seals, make: impl FnOnce() -> T) -> T {
-    let world = [ANGLE_OFFSET_DEG.with(|o| o.get()), STANDSTILL_RELEASE_S.with(|o| o.get()), FRICTION_ONSET_DEG_S.with(|o| o.get()), rate_hz()].map(f64::to_bits);
+    let p2 = PENDULUM_2ND.with(|p| p.get()).unwrap_or((0.0, 0.0));
+    let noise = [NOISE_BAR.with(|n| n.get()).unwrap_or(-1.0), NOISE_DEG.with(|n| n.get()).unwrap_or(-1.0)];
+    let world = [ANGLE_OFFSET_DEG.with(|o| o.get()), STANDSTILL_RELEASE_S.with(|o| o.get()), FRICTION_ONSET_DEG_S.with(|o| o.get()), rate_hz(), p2.0, p2.1, noise[0], noise[1]].map(f64::to_bits);
     let key = (SENSOR_LAG_S.with(|l| l.get()).map(f64::to_bits), LEARN_LAG.with(|l| l.get()), seals, world);
     if let Some((_, c)) = cache.lock().unwrap().iter().find(|(k, _)| *k == key) {
         return *c;
@@ -1842,18 +1856,19 @@ fn a_speed_dependent_friction(precision: Precision) {
 /// The safety bounds in a world the limiter was not built on: no OVERLOAD
 /// at 85 % ([`no_false_overload`]), every lowering past the rated radius cut
 /// between true u 1/1.1 and 1.05 ([`lowering_past_rated_radius`]), lift-off
-/// at 90 % not cut and at 110 % within 1 s ([`lift_off`]), every rope; then
-/// the band's percentiles ([`band_percentiles`]), printed and returned, with
-/// the motion band asserted within [1.00, 1.10] and the rest band's p5 at
-/// 1.00 or more unless `rest_p5_may_miss` (the caller documents by how much).
-fn other_world(precision: Precision, seals: &[Seals], rest_p5_may_miss: bool) -> ([f64; 3], [f64; 3]) {
+/// at 90 % not cut and at 110 % within 1 s ([`lift_off`]), every rope. Returns
+/// the band's percentiles in motion and at rest ([`band_percentiles`],
+/// printed), for the caller to assert what holds in its world.
+fn other_world(precision: Precision, seals: &[Seals]) -> ([f64; 3], [f64; 3]) {
     no_false_overload(precision, &ROPES, seals);
     lowering_past_rated_radius(precision, &ROPES, seals);
     lift_off(precision, seals);
-    let (m, r) = band_percentiles(precision, seals);
-    assert!(m[0] >= 1.0 && m[2] <= 1.1, "motion {m:?}");
-    assert!(rest_p5_may_miss || r[0] >= 1.0, "rest {r:?}");
-    (m, r)
+    band_percentiles(precision, seals)
+}
+
+/// Whether a band's (p5, p50, p95) lies within [1.00, 1.10].
+fn in_band(b: [f64; 3]) -> bool {
+    b[0] >= 1.0 && b[2] <= 1.1
 }
 
 /// A seal that breaks away at twice its sliding force (Stribeck,
@@ -1863,8 +1878,8 @@ fn other_world(precision: Precision, seals: &[Seals], rest_p5_may_miss: bool) ->
 /// lowerings cut at true u 0.950–0.981; band in motion p5/p50/p95
 /// 1.009/1.038/1.055, at rest 1.005/1.042/1.060. The band holds too.
 fn a_stribeck_seal(precision: Precision) {
-    let (_, r) = other_world(precision, &[Seals::Stribeck], false);
-    assert!(r[2] <= 1.1, "rest {r:?}");
+    let (m, r) = other_world(precision, &[Seals::Stribeck]);
+    assert!(in_band(m) && in_band(r), "motion {m:?} rest {r:?}");
 }
 
 #[test]
@@ -1888,7 +1903,8 @@ fn a_stribeck_seal_keeps_the_bounds_and_the_band_f32() {
 /// load was higher still before the raise).
 fn seals_stuck_at_standstill(precision: Precision) {
     with_setting(&STANDSTILL_RELEASE_S, 60.0, || {
-        let (_, r) = other_world(precision, &SEALS, false);
+        let (m, r) = other_world(precision, &SEALS);
+        assert!(in_band(m) && r[0] >= 1.0, "motion {m:?} rest {r:?}");
         println!("{precision:?}: stuck seals, band at rest p95 {:.3} (reads high after a raise)", r[2]);
     });
 }
@@ -1916,7 +1932,10 @@ fn seals_stuck_at_standstill_keep_the_bounds_f32() {
 fn a_sharp_or_blunt_friction_onset(precision: Precision) {
     for (onset, rest_p5_may_miss) in [(0.02, false), (1.0, true)] {
         with_setting(&FRICTION_ONSET_DEG_S, onset, || {
-            let (_, r) = other_world(precision, &SEALS, rest_p5_may_miss);
+            let (m, r) = other_world(precision, &SEALS);
+            // Where the rest band's p5 misses (0.997), it may not grow.
+            let rest_ok = if rest_p5_may_miss { r[0] >= 0.99 && r[2] <= 1.1 } else { in_band(r) };
+            assert!(in_band(m) && rest_ok, "onset {onset}: motion {m:?} rest {r:?}");
             println!("{precision:?}: friction onset {onset} deg/s, band at rest p5 {:.3}", r[0]);
         });
     }
@@ -1944,7 +1963,10 @@ fn a_sharp_or_blunt_friction_onset_keeps_the_bounds_f32() {
 fn logs_at_other_rates(precision: Precision) {
     for (rate, rest_p5_may_miss) in [(50.0, true), (20.0, false)] {
         with_setting(&LOG_RATE_HZ, rate, || {
-            let (_, r) = other_world(precision, &SEALS, rest_p5_may_miss);
+            let (m, r) = other_world(precision, &SEALS);
+            // Where the rest band's p5 misses (0.998), it may not grow.
+            let rest_ok = if rest_p5_may_miss { r[0] >= 0.99 && r[2] <= 1.1 } else { in_band(r) };
+            assert!(in_band(m) && rest_ok, "{rate} Hz: motion {m:?} rest {r:?}");
             println!("{precision:?}: {rate} Hz, band at rest p5 {:.3}", r[0]);
         });
     }
@@ -1958,6 +1980,80 @@ fn logs_at_50_and_20_hz_keep_the_bounds_f64() {
 #[test]
 fn logs_at_50_and_20_hz_keep_the_bounds_f32() {
     logs_at_other_rates(Precision::F32);
+}
+
+/// Angle sensors slower or less damped than synth's 2 Hz, ζ = 0.7 pendulum
+/// (the campaign's take 1.5–3 Hz, ζ 0.5–0.9): 1 Hz at ζ 0.7 and 0.9, 1.25
+/// and 1.5 Hz at ζ 0.5. The calibration learns a first-order equivalent lag,
+/// which for an underdamped pendulum falls short of the lag it has on a
+/// steady move (2ζ/ω_n): 0.076 s against 0.127 s at 1.25 Hz, 0.068 s
+/// against 0.106 s at 1.5 Hz (0.215 s against 0.223 s at 1 Hz, ζ 0.7). The
+/// bounds and the band hold (f64: band in motion p5 1.007–1.010, at rest
+/// 1.004–1.010). At 1 Hz and ζ 0.5 they do not quite:
+/// `a_slow_underdamped_pendulum_known_gap`.
+fn slow_or_underdamped_pendulums(precision: Precision) {
+    for p in [(1.0, 0.7), (1.0, 0.9), (1.25, 0.5), (1.5, 0.5)] {
+        with_setting(&PENDULUM_2ND, Some(p), || {
+            let (m, r) = other_world(precision, &SEALS);
+            assert!(in_band(m) && in_band(r), "pendulum {p:?}: motion {m:?} rest {r:?}");
+        });
+    }
+}
+
+#[test]
+fn slow_or_underdamped_pendulums_keep_the_bounds_f64() {
+    slow_or_underdamped_pendulums(Precision::F64);
+}
+
+#[test]
+fn slow_or_underdamped_pendulums_keep_the_bounds_f32() {
+    slow_or_underdamped_pendulums(Precision::F32);
+}
+
+/// KNOWN GAP, measured (f64): behind a 1 Hz pendulum at ζ 0.5 the
+/// calibration learns 0.097 s of lag where a steady move lags 0.159 s, so
+/// the force stands for an instant 0.06 s later than the angle it is read
+/// at; lowering past the rated radius in 15 s on the 3 m rope is cut at true
+/// u 0.901–0.905, before 1/1.1 = 0.909 (toward safety; 3 of 32 lowerings,
+/// the other bounds and the band hold). What would close it: a second-order
+/// sensor model in the calibration and in the force's time alignment.
+#[test]
+#[ignore = "KNOWN GAP: behind a 1 Hz, zeta 0.5 pendulum three 15 s lowerings on the 3 m rope are cut at true u 0.901-0.905, before 1/1.1"]
+fn a_slow_underdamped_pendulum_known_gap() {
+    with_setting(&PENDULUM_2ND, Some((1.0, 0.5)), || {
+        lowering_past_rated_radius(Precision::F64, &ROPES, &SEALS);
+    });
+}
+
+/// Noisier sensors than synth's 0.3 bar and 0.03° (the campaign's 0.1–0.5
+/// bar, 0.01–0.05°): three times either. The bounds hold. Pressure noise
+/// of 0.9 bar keeps the band (f64: 1.009/1.039/1.069 in motion,
+/// 1.007/1.041/1.064 at rest); angle noise of 0.09° does not in motion
+/// (p5 0.979; at rest 1.011/1.037/1.061): the boom's acceleration is the
+/// filtered angle differenced twice, its noise enters the boom's inertia
+/// term and the rope pendulums' drive, and the bank's lowest rope reads the
+/// low side of the noise.
+fn noisier_sensors(precision: Precision) {
+    with_setting(&NOISE_BAR, Some(0.9), || {
+        let (m, r) = other_world(precision, &SEALS);
+        assert!(in_band(m) && in_band(r), "0.9 bar: motion {m:?} rest {r:?}");
+    });
+    with_setting(&NOISE_DEG, Some(0.09), || {
+        let (m, r) = other_world(precision, &SEALS);
+        // The motion band's p5 misses (0.979); it may not grow.
+        assert!(in_band(r) && m[0] >= 0.97 && m[2] <= 1.1, "0.09 deg: motion {m:?} rest {r:?}");
+        println!("{precision:?}: angle noise 0.09 deg, band in motion p5 {:.3}", m[0]);
+    });
+}
+
+#[test]
+fn noisier_sensors_keep_the_bounds_f64() {
+    noisier_sensors(Precision::F64);
+}
+
+#[test]
+fn noisier_sensors_keep_the_bounds_f32() {
+    noisier_sensors(Precision::F32);
 }
 
 #[test]
