@@ -33,6 +33,8 @@ use std::sync::Mutex;
 use crane_model::loads::load_model::HookLoadModel;
 use crane_model::data::profile::RampShape;
 use crane_model::multibody::rope::RopeChoice;
+use crane_model::multibody::ThesisModel;
+use crane_model::structure::modal::{MeshRefinement, THESIS_BASIS};
 use crane_model::sim::simulation::{Direction, Maneuver, Program, Segment};
 use crane_model::loads::thesis_modes::thesis_load_model_f32;
 use crane_model::Real;
@@ -134,8 +136,9 @@ thread_local! {
 
 /// The crane the logs are simulated on: the limiter's own model unless
 /// [`BOOM_FACTORS`] makes its boom stiffer, softer or otherwise damped.
-fn crane() -> &'static crane_model::multibody::ThesisModel<f64> {
-    static BUILT: Mutex<Vec<((u64, u64), &'static crane_model::multibody::ThesisModel<f64>)>> = Mutex::new(Vec::new());
+fn crane() -> &'static ThesisModel<f64> {
+    type Built = Vec<((u64, u64), &'static ThesisModel<f64>)>;
+    static BUILT: Mutex<Built> = Mutex::new(Vec::new());
     let (e, d) = BOOM_FACTORS.with(|b| b.get());
     if (e, d) == (1.0, 1.0) {
         return model();
@@ -148,9 +151,7 @@ fn crane() -> &'static crane_model::multibody::ThesisModel<f64> {
     let mut data = crane_model::CraneData::coles_mobile_930();
     data.boom.youngs_modulus_pa *= e;
     data.boom.damping_ratio *= d;
-    let m = Box::leak(Box::new(
-        crane_model::multibody::ThesisModel::build(&data, crane_model::structure::modal::MeshRefinement::THESIS, &crane_model::structure::modal::THESIS_BASIS).expect("model"),
-    ));
+    let m = Box::leak(Box::new(ThesisModel::build(&data, MeshRefinement::THESIS, &THESIS_BASIS).expect("model")));
     built.push((key, m));
     m
 }
