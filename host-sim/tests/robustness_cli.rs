@@ -636,3 +636,51 @@ fn write_errors_are_errors() {
         );
     }
 }
+
+/// Writes `log` to `out` with its `boom_angle_deg` (fourth column) in radians.
+fn angles_in_radians(log: &Path, out: &Path) {
+    let src = std::fs::read_to_string(log).unwrap();
+    let mut dst = String::new();
+    let mut header_seen = false;
+    for line in src.lines() {
+        if line.starts_with('#') || !header_seen {
+            header_seen |= line.starts_with("t_s,");
+            dst.push_str(line);
+        } else {
+            let mut f: Vec<String> = line.split(',').map(str::to_string).collect();
+            f[3] = format!("{:.5}", f[3].parse::<f64>().unwrap().to_radians());
+            dst.push_str(&f.join(","));
+        }
+        dst.push('\n');
+    }
+    std::fs::write(out, dst).unwrap();
+}
+
+/// A log whose angle column holds radians reads as a boom near horizontal,
+/// where the load's pressure reads as a far lighter load: the lowering of
+/// `overload_lowering.csv` (8 t, 75° → 40°, OVERLOAD from 7.24 s) replays
+/// as NORMAL at u 0.04–0.37. `replay` warns and names the span;
+/// `calibrate` refuses such runs, which cannot be luffing runs.
+#[test]
+fn an_angle_column_in_radians_is_named() {
+    let dir = tempfile::tempdir().unwrap();
+    let rad = dir.path().join("rad.csv");
+    angles_in_radians(&example("overload_lowering.csv"), &rad);
+    let cal = example("cal.json");
+    let cal = cal.to_str().unwrap();
+    let out = replay(&rad, &["--calibration", cal]);
+    let err = text(&out.stderr);
+    assert!(err.contains("warning: every boom_angle_deg of the log lies between 0.70 and 1.31") && err.contains("holds radians"), "{err}");
+    // The same log in degrees gets no such warning.
+    let out = replay(&example("overload_lowering.csv"), &["--calibration", cal]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(!text(&out.stderr).contains("radians"), "{}", text(&out.stderr));
+    let (up, down) = (dir.path().join("up.csv"), dir.path().join("down.csv"));
+    angles_in_radians(&example("unloaded_up.csv"), &up);
+    angles_in_radians(&example("unloaded_down.csv"), &down);
+    let out = bin().args(["calibrate", up.to_str().unwrap(), down.to_str().unwrap(), "--out", dir.path().join("c.json").to_str().unwrap()]).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = text(&out.stderr);
+    assert!(err.contains("up.csv: every boom_angle_deg of the log lies between") && err.contains("luffs the boom through tens of degrees"), "{err}");
+    assert!(!dir.path().join("c.json").exists());
+}

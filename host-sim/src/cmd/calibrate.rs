@@ -101,6 +101,7 @@ fn read_log(path: &Path, load_kg: f64) -> anyhow::Result<Log> {
     // Mean pressures of the log: the boom hangs on the piston side, so p1
     // far above p2 (p2 above p1: the columns are swapped).
     let (mut p1_sum, mut p2_sum, mut n_p) = (0.0f64, 0.0f64, 0u32);
+    let mut angles = super::replay::AngleSpan::default();
     loop {
         let line = match read_line(&mut reader, &mut buf) {
             Ok(Some(line)) => line,
@@ -130,12 +131,18 @@ fn read_log(path: &Path, load_kg: f64) -> anyhow::Result<Log> {
         }
         p1_sum += record.frame.p1_bar;
         p2_sum += record.frame.p2_bar;
+        angles.add(record.frame.boom_angle_deg);
         n_p += 1;
         frames.push((record.line, record.frame));
     }
     parser
         .finish()
         .map_err(|e| anyhow::anyhow!("{name}: {e}"))?;
+    // A calibration run luffs through tens of degrees; one that never
+    // leaves horizontal is a column in radians far more likely than a run.
+    if let Some(hint) = angles.radians_hint() {
+        anyhow::bail!("{name}: {hint}; a calibration run luffs the boom through tens of degrees");
+    }
     if n_p > 0 {
         let (p1, p2) = (p1_sum / f64::from(n_p), p2_sum / f64::from(n_p));
         anyhow::ensure!(

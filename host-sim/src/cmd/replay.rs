@@ -281,6 +281,43 @@ impl Spacing {
     }
 }
 
+/// The span of a log's boom angles, to name a column written in radians:
+/// read as degrees it puts the boom within 1.75° of horizontal all along
+/// (90° is 1.57 rad), where the load's pressure reads as a far lighter load
+/// (a lowering from 75° to 40° with 8 t on the hook replays as NORMAL at
+/// u 0.04–0.37 instead of OVERLOAD).
+#[derive(Debug, Default)]
+pub(crate) struct AngleSpan {
+    range_deg: Option<(f64, f64)>,
+}
+
+impl AngleSpan {
+    /// The largest |angle| (°) of a log that looks like radians: the
+    /// crane's highest angle, 90°, is 1.571 rad, and the reading's noise
+    /// and offset add a little.
+    const RADIANS_BELOW_DEG: f64 = 1.75;
+
+    pub(crate) fn add(&mut self, deg: f64) {
+        if deg.is_finite() {
+            self.range_deg = Some(self.range_deg.map_or((deg, deg), |(lo, hi)| (lo.min(deg), hi.max(deg))));
+        }
+    }
+
+    /// What to tell the user when every angle lies within
+    /// ±[`Self::RADIANS_BELOW_DEG`] of horizontal.
+    pub(crate) fn radians_hint(&self) -> Option<String> {
+        let (lo, hi) = self.range_deg?;
+        (lo >= -Self::RADIANS_BELOW_DEG && hi <= Self::RADIANS_BELOW_DEG).then(|| {
+            format!(
+                "every boom_angle_deg of the log lies between {lo:.2} and {hi:.2}: the boom within {:.2}° of horizontal all \
+                 along. If the column holds radians, convert it to degrees (× 57.296): read as degrees, a load's \
+                 pressure reads as a far lighter load",
+                Self::RADIANS_BELOW_DEG
+            )
+        })
+    }
+}
+
 /// Runs the subcommand; returns the exit code.
 pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
     let file = open_log(&args.log)?;
@@ -318,12 +355,14 @@ pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
     let mut out = crate::stdout::stdout();
     let mut text = String::new();
     let mut spacing = Spacing::default();
+    let mut angles = AngleSpan::default();
 
     let error = for_each_record_pipelined(
         &mut reader,
         |bytes| progress.advance(bytes),
         |record| {
             spacing.add(record.t_us);
+            angles.add(f64::from(record.frame.boom_angle_deg));
             let (report, event) = replay.feed(record);
             if let Some(r) = recording.as_mut() {
                 r.push(record, &report);
@@ -361,6 +400,9 @@ pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
     // After the timeline, so the two streams do not interleave on a terminal.
     if let Some(note) = spacing.note() {
         eprintln!("{note}");
+    }
+    if let Some(hint) = angles.radians_hint() {
+        eprintln!("warning: {hint}.");
     }
     let code = match &error {
         Some(e) => {
