@@ -2428,3 +2428,36 @@ fn switched_on_during_a_lowering() {
     }
     assert!(failures.is_empty(), "{failures:#?}");
 }
+
+/// KNOWN GAP, measured (f64): a load added at rest where a rope of the bank
+/// follows the swing ([`ADDED_SEEN`], 110 % and 90 % taken up in 0.5 s 3 s
+/// after the stop) in two worlds the campaign does not draw.
+///
+/// - Seals that stay stuck at standstill (the friction relaxes over 60 s;
+///   the campaign's cranes 0–1 s, the limiter takes it off over 0.5 s): the
+///   rest reading moves from the move's by the stuck friction's share, every
+///   rope's ratio to its average with it, and the rope that follows the
+///   swing is not consistent enough to vote. 6 of 16 cases of 110 % are cut
+///   late: 40° → 60° on the 5.95 m rope at +3.61–3.69 s, 60° → 40° on the
+///   5.95 m rope at +1.05–1.07 s and on the 8.9 m rope at +2.34–2.37 s
+///   (the others at +0.69–0.87 s, as with released seals). Released over
+///   3 s: one case, +3.86 s; over 1 s or less: none.
+/// - 0.09° of angle noise (three times synth's): the same 40° → 60° case
+///   with constant friction at +3.90 s; the other 15 at +0.69–0.90 s.
+///
+/// The limiter errs high after a raise with stuck seals (the friction
+/// read as load), so the lateness is of a load added after the stop's
+/// transient, not a missed overload at rest. What would close it: a
+/// consistency test that a change common to every rope (the seals'
+/// release, the noise) does not disturb, which the previous attempt
+/// (freezing the ropes' inconsistency through the stop) did not give
+/// without false OVERLOADs.
+#[test]
+#[ignore = "KNOWN GAP: with seals stuck at standstill or 0.09 deg of angle noise, a load added 3 s after a stop is cut up to 3.9 s after its take-up where a rope follows the swing"]
+fn a_load_added_at_rest_with_stuck_seals_or_angle_noise_known_gap() {
+    let mut failed = Vec::new();
+    let run = || std::panic::catch_unwind(|| load_added_at_rest_after_a_move(Precision::F64, &ADDED_SEEN)).is_ok();
+    with_setting(&STANDSTILL_RELEASE_S, 60.0, || if !run() { failed.push("stuck seals") });
+    with_setting(&NOISE_DEG, Some(0.09), || if !run() { failed.push("0.09 deg of angle noise") });
+    assert!(failed.is_empty(), "load added at rest late with {failed:?}");
+}
