@@ -524,6 +524,60 @@ fn lowering_past_rated_radius(precision: Precision, ropes: &[Rope], seals_of: &[
     assert!(failures.is_empty(), "{failures:#?}");
 }
 
+/// [`lowering_past_rated_radius`]'s bounds for lowerings (`moves`: from,
+/// to, duration, ramp) other than the thesis's speeds, every rope, both
+/// friction laws, both ramp shapes, the loads rated at 45° and 30°. Returns
+/// the cases cut before true u = 1/1.1, not cut, or with a sample at a true
+/// u ≥ 1.05 neither OVERLOAD nor FAULT; prints every case's first onset.
+fn lowerings(precision: Precision, moves: &[(f64, f64, f64, f64)]) -> Vec<String> {
+    let mut failures = Vec::new();
+    for &(from, to, dur, ramp) in moves {
+        for rated_at in [45.0f64, 30.0] {
+            let w = rated_kg(rated_at.to_radians());
+            for shape in [RampShape::Linear, RampShape::Cycloidal] {
+                for rope in ROPES {
+                    for seals in SEALS {
+                        let sc = Scenario { load_kg: w, from_deg: from, to_deg: to, duration_s: dur, ramp_s: ramp, shape, rope, seals, lift_off_s: None, seed: 9 };
+                        let pts = replay(&sc, precision);
+                        let onset = lowest_onset_u(&pts);
+                        println!("{:<60} lowest OVERLOAD onset at true u {}", sc.name(), onset.map_or("none".into(), |u| format!("{u:.3}")));
+                        match onset {
+                            None => failures.push(format!("{}: never cut", sc.name())),
+                            Some(u) if u < 1.0 / 1.1 => failures.push(format!("{}: OVERLOAD at true u {u:.3}", sc.name())),
+                            Some(_) => {}
+                        }
+                        let late = uncut(&pts).next().map(|q| format!("{}: {:?} at {:.2} s, true u {:.3}", sc.name(), q.state, q.t, q.u));
+                        failures.extend(late);
+                    }
+                }
+            }
+        }
+    }
+    failures
+}
+
+/// Lowerings faster than the thesis's 4 °/s: 80° → 20° and 70° → 20° in
+/// 10 s (6 and 5 °/s). Cut between true u 1/1.1 and 1.05: measured (f64)
+/// at 0.957–0.990 and 0.962–0.990.
+#[test]
+fn a_faster_lowering_past_the_rated_radius() {
+    let failures = lowerings(Precision::F64, &[(80.0, 20.0, 10.0, 1.0), (70.0, 20.0, 10.0, 1.0)]);
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
+/// KNOWN GAP, measured (f64): lowered from 85° to 10° in 10 s (7.5 °/s,
+/// nearly twice the thesis's fastest move, from an angle where tan θ =
+/// 11.4), the 3 m and the 10 m held ropes swing so far in the start ramp
+/// that 11 of 32 lowerings are cut early, from true u 0.61 (toward safety;
+/// none late; the paid-out rope is cut at 1.018–1.025, the 17 m rope at
+/// 0.96–0.98).
+#[test]
+#[ignore = "KNOWN GAP: lowered 85 -> 10 deg in 10 s on a 3 m or 10 m held rope, 11 of 32 are cut early (from true u 0.61)"]
+fn a_lowering_from_85_degrees_at_7_5_degrees_per_second_known_gap() {
+    let failures = lowerings(Precision::F64, &[(85.0, 10.0, 10.0, 1.0)]);
+    assert!(failures.is_empty(), "{} of 32: {failures:#?}", failures.len());
+}
+
 #[test]
 fn lowering_past_rated_radius_f64() {
     lowering_past_rated_radius(Precision::F64, &ROPES, &SEALS);
