@@ -473,6 +473,61 @@ fn no_false_overload(precision: Precision, ropes: &[Rope], seals_of: &[Seals]) {
     assert!(failures.is_empty(), "{failures:#?}");
 }
 
+/// [`no_false_overload`] over other ranges than the thesis's 40°–80°: for
+/// each (lo, hi) of `ranges` 85 % of the load rated at lo, moved lo → hi and
+/// back in 10 s and 30 s, linear and cycloidal ramps, every rope, both
+/// friction laws (the true u is highest, 0.85, at lo). Returns the cases
+/// with an OVERLOAD and the highest estimated u.
+fn no_false_overload_over(precision: Precision, ranges: &[(f64, f64)]) -> (Vec<String>, f64) {
+    let (mut failures, mut worst) = (Vec::new(), 0.0f64);
+    for &(lo, hi) in ranges {
+        let w = 0.85 * rated_kg(lo.to_radians());
+        for (a, b) in [(lo, hi), (hi, lo)] {
+            for (dur, ramp) in [(10.0, 1.0), (30.0, 1.5)] {
+                for shape in [RampShape::Linear, RampShape::Cycloidal] {
+                    for rope in ROPES {
+                        for seals in SEALS {
+                            let sc = Scenario { load_kg: w, from_deg: a, to_deg: b, duration_s: dur, ramp_s: ramp, shape, rope, seals, lift_off_s: None, seed: 7 };
+                            let pts = replay(&sc, precision);
+                            let peak = pts.iter().map(|p| p.ratio * p.u).fold(0.0, f64::max);
+                            worst = worst.max(peak);
+                            if let Some((t, u)) = first_overload(&pts) {
+                                failures.push(format!("{} OVERLOAD at {t:.2} s, true u {u:.3} (highest estimated u {peak:.3})", sc.name()));
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    println!("{precision:?}, ranges {ranges:?}: {} false OVERLOADs of {}; highest estimated u {worst:.3}", failures.len(), ranges.len() * 64);
+    (failures, worst)
+}
+
+/// No OVERLOAD at 85 % over 20°–60°, 10°–50°, 5°–30° and 30°–85° (f64; the
+/// 10 s and 30 s moves, every rope): highest estimated u 0.969 (measured).
+#[test]
+fn no_false_overload_at_85_percent_over_other_ranges() {
+    let (failures, _) = no_false_overload_over(Precision::F64, &[(20.0, 60.0), (10.0, 50.0), (5.0, 30.0), (30.0, 85.0)]);
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
+/// KNOWN GAP, measured (f64): 85 % of the load rated at 50° raised to 85°
+/// in 10 s on the 3 m held rope. Stopped at 85° (tan θ = 11.4) the load
+/// swings ±24°, its pull on the cylinder runs from −4 to +6 times its
+/// weight (the simulator's rigid rope; a real one goes slack, and the load
+/// would strike a boom 5° off vertical), p1 leaves its range (FAULT for
+/// 1.5 s), and the chain restarted after the gap reads the swing as load:
+/// OVERLOAD 2.4–2.6 s after the stop at a true u of 0.62 (estimated up to
+/// 1.40), in 4 of the 64 cases of 50°–85°; the 30 s raises and every other
+/// rope are not cut. The limiter cuts throughout (FAULT, then OVERLOAD).
+#[test]
+#[ignore = "KNOWN GAP: raised 50 -> 85 deg in 10 s on a 3 m rope, the swing (+-24 deg) takes p1 out of range and then reads as load: OVERLOAD at true u 0.62"]
+fn a_raise_to_85_degrees_on_a_3_m_rope_known_gap() {
+    let (failures, _) = no_false_overload_over(Precision::F64, &[(50.0, 85.0)]);
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
 #[test]
 fn no_false_overload_at_85_percent_f64() {
     no_false_overload(Precision::F64, &ROPES, &SEALS);
