@@ -956,6 +956,66 @@ fn lift_off(precision: Precision, seals_of: &[Seals]) {
     assert!(failures.is_empty(), "{failures:#?}");
 }
 
+/// [`lift_off`] at other angles and take-up times: at each of `angles`,
+/// 90 % and 110 % of the rated load taken up in each of `take_ups` (s),
+/// every rope, both friction laws. Returns the failures (90 % cut, 110 %
+/// not cut or cut more than 1 s after it leaves the ground) and the
+/// longest delay of a 110 % cut.
+fn lift_offs_over(precision: Precision, angles: &[f64], take_ups: &[f64]) -> (Vec<String>, f64) {
+    let (mut failures, mut worst) = (Vec::new(), 0.0f64);
+    for &angle in angles {
+        let rated = rated_kg(angle.to_radians());
+        for &take_up in take_ups {
+            for rope in ROPES {
+                for seals in SEALS {
+                    for (frac, must) in [(0.9, false), (1.1, true)] {
+                        let sc = Scenario { load_kg: frac * rated, from_deg: angle, to_deg: angle, duration_s: 6.0, ramp_s: 0.0, shape: RampShape::Linear, rope, seals, lift_off_s: Some(take_up), seed: 5 };
+                        let pts = replay(&sc, precision);
+                        let off = HOLD_BEFORE_S + take_up;
+                        match (must, first_overload(&pts)) {
+                            (false, Some((t, _))) => failures.push(format!("{}: OVERLOAD at {t:.2} s", sc.name())),
+                            (true, None) => failures.push(format!("{}: no OVERLOAD", sc.name())),
+                            (true, Some((t, _))) => {
+                                worst = worst.max(t - off);
+                                if t > off + 1.0 {
+                                    failures.push(format!("{}: OVERLOAD {:.2} s after it leaves the ground", sc.name(), t - off));
+                                }
+                            }
+                            _ => {}
+                        }
+                    }
+                }
+            }
+        }
+    }
+    println!("{precision:?}, lift-offs at {angles:?} taken up in {take_ups:?} s: {} failures, 110 % cut at most {worst:.2} s after leaving the ground", failures.len());
+    (failures, worst)
+}
+
+/// Lift-offs at 10°, 20°, 35°, 65° and 80°, taken up in 1 s and 2 s: 90 %
+/// never cut, 110 % within 1 s of leaving the ground (measured, f64: at
+/// most 0.86 s).
+#[test]
+fn lift_off_at_other_angles() {
+    let (failures, _) = lift_offs_over(Precision::F64, &[10.0, 20.0, 35.0, 65.0, 80.0], &[1.0, 2.0]);
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
+/// KNOWN GAP, measured (f64): taken up in 0.5 s, 110 % on the 3 m held
+/// rope at 65° and 80° is cut 1.02–1.06 s after it leaves the ground (the
+/// other 36 cases of 110 % within 1 s, 90 % never). The boom bends under
+/// the load as it is taken up, its tip moves, and a 3 m rope at a steep
+/// boom swings inward by up to 0.9° (tan 80° · tan 0.9° = 9 % less pull)
+/// without the boom angle showing any motion, so no rope of the bank
+/// predicts it. What would close it: driving the rope pendulums with the
+/// tip's motion the model gives for the load's change.
+#[test]
+#[ignore = "KNOWN GAP: 110 % taken up in 0.5 s on a 3 m rope at 65-80 deg is cut 1.02-1.06 s after it leaves the ground"]
+fn lift_off_in_half_a_second_on_a_short_rope_at_a_steep_boom_known_gap() {
+    let (failures, _) = lift_offs_over(Precision::F64, &[10.0, 20.0, 35.0, 65.0, 80.0], &[0.5]);
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
 #[test]
 fn lift_off_f64() {
     lift_off(Precision::F64, &SEALS);
