@@ -582,8 +582,9 @@ fn lowering_past_rated_radius(precision: Precision, ropes: &[Rope], seals_of: &[
 /// [`lowering_past_rated_radius`]'s bounds for lowerings (`moves`: from,
 /// to, duration, ramp) other than the thesis's speeds, every rope, both
 /// friction laws, both ramp shapes, the loads rated at 45° and 30°. Returns
-/// the cases cut before true u = 1/1.1, not cut, or with a sample at a true
-/// u ≥ 1.05 neither OVERLOAD nor FAULT; prints every case's first onset.
+/// the cases cut before true u = 1/1.1 or with a sample at a true u ≥ 1.05
+/// neither OVERLOAD nor FAULT (not cut, late or released); prints every
+/// case's lowest onset.
 fn lowerings(precision: Precision, moves: &[(f64, f64, f64, f64)]) -> Vec<String> {
     let mut failures = Vec::new();
     for &(from, to, dur, ramp) in moves {
@@ -596,10 +597,8 @@ fn lowerings(precision: Precision, moves: &[(f64, f64, f64, f64)]) -> Vec<String
                         let pts = replay(&sc, precision);
                         let onset = lowest_onset_u(&pts);
                         println!("{:<60} lowest OVERLOAD onset at true u {}", sc.name(), onset.map_or("none".into(), |u| format!("{u:.3}")));
-                        match onset {
-                            None => failures.push(format!("{}: never cut", sc.name())),
-                            Some(u) if u < 1.0 / 1.1 => failures.push(format!("{}: OVERLOAD at true u {u:.3}", sc.name())),
-                            Some(_) => {}
+                        if let Some(u) = onset.filter(|&u| u < 1.0 / 1.1) {
+                            failures.push(format!("{}: OVERLOAD at true u {u:.3}", sc.name()));
                         }
                         let late = uncut(&pts).next().map(|q| format!("{}: {:?} at {:.2} s, true u {:.3}", sc.name(), q.state, q.t, q.u));
                         failures.extend(late);
@@ -617,6 +616,16 @@ fn lowerings(precision: Precision, moves: &[(f64, f64, f64, f64)]) -> Vec<String
 #[test]
 fn a_faster_lowering_past_the_rated_radius() {
     let failures = lowerings(Precision::F64, &[(80.0, 20.0, 10.0, 1.0), (70.0, 20.0, 10.0, 1.0)]);
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
+/// Lowerings over other ranges than 80° → 20°: 60° → 5° in 15 s, 50° → 10°
+/// in 30 s, 85° → 30° in 15 s, 75° → 35° in 40 s (there the load rated at
+/// 30° never reaches its rating, and is not cut). Cut between true u 1/1.1
+/// and 1.05: measured (f64) at 0.954–0.979.
+#[test]
+fn lowering_past_the_rated_radius_over_other_ranges() {
+    let failures = lowerings(Precision::F64, &[(60.0, 5.0, 15.0, 1.0), (50.0, 10.0, 30.0, 1.5), (85.0, 30.0, 15.0, 1.0), (75.0, 35.0, 40.0, 1.5)]);
     assert!(failures.is_empty(), "{failures:#?}");
 }
 
