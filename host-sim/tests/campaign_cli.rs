@@ -202,3 +202,32 @@ fn the_third_campaigns_steep_lift_offs_are_cut_in_time() {
         assert!(v["lift_off_delay_s"].as_f64().is_some_and(|d| d <= 1.0), "#{} lift-off delay: {v}", v["index"]);
     }
 }
+
+/// `--wide` draws the cranes' sensors and seals from wider worlds and
+/// changes nothing else: the same scenarios (moves, loads, ropes, noise
+/// seeds) on the same cranes' friction laws; crane 0 stays the nominal one;
+/// the other cranes' synth lines carry the wider settings; the summary says
+/// which worlds it drew from.
+#[test]
+fn wider_worlds_change_only_the_cranes_sensors() {
+    let args = ["--scenarios", "6", "--seed", "5", "--cranes", "3", "--json", "--step-ms", "5"];
+    let (narrow, _) = campaign(&args);
+    let (wide, _) = campaign(&[&args[..], &["--wide"]].concat());
+    assert_eq!(summary(&narrow)["wide"], false);
+    assert_eq!(summary(&wide)["wide"], true);
+    assert_eq!(scenario_lines(&wide).len(), 6);
+    let parse = |l: &String| serde_json::from_str::<serde_json::Value>(l).expect("json");
+    for (a, b) in scenario_lines(&narrow).iter().map(parse).zip(scenario_lines(&wide).iter().map(parse)) {
+        for key in ["from_deg", "to_deg", "duration_s", "load_kg", "rope", "rope_length_m", "lift_off_s", "noise_seed", "crane"] {
+            assert_eq!(a[key], b[key], "{key}");
+        }
+        let (sa, sb) = (a["synth"].as_str().expect("synth"), b["synth"].as_str().expect("synth"));
+        let law = |s: &str| s.split(" --standstill-release-s").next().unwrap_or("").split(" --friction-law").nth(1).unwrap_or("").to_string();
+        assert_eq!(law(sa), law(sb), "the friction law is the crane's");
+        if a["crane"] == 0 {
+            assert_eq!(sa, sb, "crane 0 is the nominal crane");
+        } else {
+            assert!(!sa.contains("--friction-onset-deg-s") && sb.contains("--friction-onset-deg-s"), "{sa}\n{sb}");
+        }
+    }
+}

@@ -74,6 +74,12 @@ pub struct CampaignArgs {
     /// piston force within 0.75 % of it at the kinks of linear ramps.
     #[arg(long, default_value_t = 2.0)]
     pub step_ms: f64,
+    /// Draw the cranes' sensors and seals from wider worlds than the field-physics
+    /// issue's (docs/campaign.md, "Wider worlds"): seals that release over 0.01–60 s,
+    /// friction turning on over 0.02–1 °/s, pendulums of 1–3 Hz, up to three times the
+    /// noise. The scenarios are the same.
+    #[arg(long)]
+    pub wide: bool,
 }
 
 /// Log rate of the campaign's logs (the limiter's cycle).
@@ -158,6 +164,8 @@ struct Crane {
     friction_down_a_n: f64,
     friction_down_b: f64,
     standstill_release_s: f64,
+    /// Boom rate over which the friction turns (°/s; synth's 0.2 but with `--wide`).
+    friction_onset_deg_s: f64,
     pendulum: &'static str,
     pendulum_hz: f64,
     pendulum_damping: f64,
@@ -170,7 +178,9 @@ struct Crane {
 
 impl Crane {
     /// Crane `index` of the campaign `seed`; crane 0 is the nominal one of `synth`.
-    fn new(seed: u64, index: usize) -> Self {
+    /// `wide`: its sensors and seals drawn from the wider worlds (a stream of
+    /// its own, so the friction law and offsets are the same crane's).
+    fn new(seed: u64, index: usize, wide: bool) -> Self {
         let mut r = Rng::new(seed ^ 0xC4A2_0000 ^ ((index as u64) << 20));
         let seal = index % 2 == 1;
         let (ua, ub, da, db) = if index == 0 {
@@ -190,11 +200,27 @@ impl Crane {
         let pressure_offset = if nominal { 0.0 } else { r.uniform(-0.3, 0.3) };
         let noise_bar = if nominal { 0.3 } else { r.uniform(0.1, 0.5) };
         let noise_deg = if nominal { 0.03 } else { r.uniform(0.01, 0.05) };
+        let mut onset = SensorModel::standard().friction_onset_deg_s;
+        let (mut release, mut noise_bar, mut noise_deg, mut hz, mut pendulum) = (release, noise_bar, noise_deg, hz, pendulum);
+        if wide && !nominal {
+            let mut w = Rng::new(seed ^ 0x57DE_0000 ^ ((index as u64) << 20));
+            let log_uniform = |w: &mut Rng, lo: f64, hi: f64| (w.uniform(lo.ln(), hi.ln())).exp();
+            release = log_uniform(&mut w, 0.01, 60.0).min(60.0);
+            onset = log_uniform(&mut w, 0.02, 1.0);
+            let k = w.uniform(1.0, 3.0);
+            noise_bar *= k;
+            noise_deg *= k;
+            if !first_order {
+                hz = w.uniform(1.0, 3.0);
+                pendulum = PendulumSensor::SecondOrder { hz, damping: zeta };
+            }
+        }
         let sensors = SensorModel {
             seed: 0,
             friction_up: law(ua, ub),
             friction_down: law(da, db),
             standstill_release_s: release,
+            friction_onset_deg_s: onset,
             noise_bar,
             noise_deg,
             pendulum,
@@ -211,6 +237,7 @@ impl Crane {
             friction_down_a_n: da,
             friction_down_b: db,
             standstill_release_s: release,
+            friction_onset_deg_s: onset,
             pendulum: if first_order { "first-order" } else { "second-order" },
             pendulum_hz: hz,
             pendulum_damping: zeta,
@@ -231,6 +258,9 @@ impl Crane {
         match self.sensors.pendulum {
             PendulumSensor::FirstOrder { tau_s } => s += &format!(" --pendulum-tau-s {tau_s:.4}"),
             PendulumSensor::SecondOrder { hz, damping } => s += &format!(" --pendulum-hz {hz:.4} --pendulum-damping {damping:.4}"),
+        }
+        if self.friction_onset_deg_s != SensorModel::standard().friction_onset_deg_s {
+            s += &format!(" --friction-onset-deg-s {:.5}", self.friction_onset_deg_s);
         }
         s
     }
@@ -838,6 +868,8 @@ struct Summary {
     seed: u64,
     shard: String,
     cranes: usize,
+    /// The cranes' sensors and seals drawn from the wider worlds (`--wide`).
+    wide: bool,
     failed_simulations: usize,
     #[serde(flatten)]
     all: TallySummary,
@@ -1011,7 +1043,7 @@ fn run_campaign(args: &CampaignArgs, progress: bool) -> Result<(Summary, Vec<Str
     } else {
         args.only.clone()
     };
-    let cranes: Vec<Crane> = (0..args.cranes.min(args.scenarios)).map(|i| Crane::new(args.seed, i)).collect();
+    let cranes: Vec<Crane> = (0..args.cranes.min(args.scenarios)).map(|i| Crane::new(args.seed, i, args.wide)).collect();
     let calibrations: Vec<(CraneCalibration, bool)> = cranes.par_iter().map(|c| calibrate_crane(&model, c, &options, dt)).collect::<Result<_>>()?;
     let bar = if progress { indicatif::ProgressBar::new(indices.len() as u64) } else { indicatif::ProgressBar::hidden() };
     bar.set_style(
@@ -1077,6 +1109,7 @@ fn run_campaign(args: &CampaignArgs, progress: bool) -> Result<(Summary, Vec<Str
         seed: args.seed,
         shard: if args.only.is_empty() { format!("{k}/{n}") } else { "only".to_string() },
         cranes: cranes.len(),
+        wide: args.wide,
         failed_simulations,
         all: all.summary(),
         groups: GROUPS.iter().zip(groups).map(|(&(rope, friction), t)| GroupSummary { rope, friction, grades: t.summary() }).collect(),
@@ -1137,7 +1170,7 @@ pub fn run(args: CampaignArgs) -> Result<u8> {
         }
         let _ = writeln!(out, "{}", serde_json::to_string(&summary)?);
     } else {
-        let _ = writeln!(out, "campaign          seed {}, shard {}, {} scenarios on {} cranes", summary.seed, summary.shard, summary.all.scenarios, summary.cranes);
+        let _ = writeln!(out, "campaign          seed {}, shard {}, {} scenarios on {} cranes{}", summary.seed, summary.shard, summary.all.scenarios, summary.cranes, if summary.wide { " (wider worlds)" } else { "" });
         let _ = writeln!(out, "failed runs       {}", summary.failed_simulations);
         let _ = write_tally(&mut out, &summary.all);
         for g in &summary.groups {
