@@ -629,6 +629,64 @@ fn lowering_past_the_rated_radius_over_other_ranges() {
     assert!(failures.is_empty(), "{failures:#?}");
 }
 
+/// KNOWN GAP, measured (f64 and f32): a missed overload inside the
+/// campaign's own sensor range, found by its wider worlds (`crane-sim
+/// campaign --wide --seed 3`, #4653). A lift-off of 6.25 t at 79°, then at
+/// once a lowering to 42° in 9.6 s (past the rated radius), on a 9.5 m held
+/// rope, behind an angle sensor with 0.05° of noise and a 1.84 Hz, ζ 0.51
+/// pendulum; eight noise draws, both friction laws. With noise draw 1 (both
+/// laws) the cut comes at true u 1.110; the other 14 at 0.992–0.998.
+///
+/// Why: the filters start settled on their first sample, and its noise reads
+/// as a rate of up to 0.5 °/s while they converge. The rope bank takes that
+/// for a luff (over 0.15 °/s). At 79° the pendulums' phantom swing keeps the
+/// ropes from agreeing within 0.5 %, so the lift-off that follows never
+/// raises the averages to W_fast. They climb at their own pace, to half the
+/// load by the time the lowering starts, and the lowering is weighed from
+/// there (0.62 × the load 3 s into it).
+///
+/// Tried, not kept: once the filters have converged (1 s), a bank whose boom
+/// is still forgets the start-up's swings and luff (`hang_still`, or
+/// `start_at_rest`). Every case here was then cut at 0.990–0.998, and
+/// campaign seeds 1–3 kept 0 missed, 0 early, 0 false. But at 84.6° (seed 1
+/// #1830) the start-up's phantom swing had already pulled the averages low,
+/// and the bank's reading before the move fell to 0.71–0.77 × the load for
+/// about a second (0.97 before): at power-up it could release an OVERLOAD.
+/// What would close it: no pendulum drive and no luff from the filters'
+/// start-up at all, without missing the start of a move made in the first
+/// second after power-up.
+fn a_lowering_right_after_a_lift_off_behind_a_noisy_angle_sensor(precision: Precision) {
+    let mut failures = Vec::new();
+    with_setting(&NOISE_DEG, Some(0.05), || {
+        with_setting(&PENDULUM_2ND, Some((1.84, 0.51)), || {
+            let mut p = Program::new(78.73, 0.0, RopeChoice::Held { length_m: Some(9.53) }).unwrap();
+            p.push(Segment::Hold { duration_s: HOLD_BEFORE_S }).unwrap();
+            p.push(Segment::LiftOff { duration_s: 5.83, load_kg: 6252.5 }).unwrap();
+            p.push(Segment::Luff { to_deg: 41.94, shape: RampShape::Cycloidal, t1_s: 1.12, t2_s: 8.5, t3_s: 9.62 }).unwrap();
+            p.push(Segment::Hold { duration_s: HOLD_AFTER_S }).unwrap();
+            for seals in SEALS {
+                for seed in 1..=8 {
+                    let pts = replay_rows(&program_rows(&p, seals, seed), seals, precision);
+                    let onset = lowest_onset_u(&pts);
+                    println!("{seals:?} seed {seed}: lowest OVERLOAD onset at true u {}", onset.map_or("none".into(), |u| format!("{u:.3}")));
+                    if let Some(u) = onset.filter(|&u| u < 1.0 / 1.1) {
+                        failures.push(format!("{seals:?} seed {seed}: OVERLOAD at true u {u:.3}"));
+                    }
+                    let late = uncut(&pts).next().map(|q| format!("{seals:?} seed {seed}: {:?} at {:.2} s, true u {:.3}", q.state, q.t, q.u));
+                    failures.extend(late);
+                }
+            }
+        });
+    });
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
+#[test]
+#[ignore = "KNOWN GAP: a lift-off at 79 deg then a lowering, behind a 0.05 deg noisy angle sensor: the filters' start-up reads as a luff and the lowering is cut at true u 1.11 (1 of 8 noise draws)"]
+fn a_lowering_right_after_a_lift_off_behind_a_noisy_angle_sensor_known_gap() {
+    a_lowering_right_after_a_lift_off_behind_a_noisy_angle_sensor(Precision::F64);
+}
+
 /// KNOWN GAP, measured (f64): lowered from 85° to 10° in 10 s (7.5 °/s,
 /// nearly twice the thesis's fastest move, from an angle where tan θ =
 /// 11.4), the 3 m and the 10 m held ropes swing so far in the start ramp
