@@ -126,6 +126,26 @@
 //! creeps (its rate over [`SETTLED_RAD_S`]): its force may still carry the
 //! seals' sliding friction.
 //!
+//! ## Power-up: the filters' start-up is no luff
+//!
+//! The filters start settled on their first sample, and that sample's noise
+//! reads as a rate while they converge: up to 0.5 °/s for half a second with
+//! 0.05° of angle noise. For the first
+//! [`crate::load_estimate::CREEP_AFTER_START_S`] the bank therefore drives no
+//! pendulum with it and counts no luff. Before this, the start-up counted as
+//! a luff (over [`MOVING_RAD_S`]). At 79° its phantom swing then kept the
+//! ropes from agreeing, so a lift-off that followed never raised the averages
+//! to W_fast. A lowering past the rated radius right after it started from
+//! half the load and was cut at true u 1.11 (`host-sim` test
+//! `a_lowering_right_after_a_lift_off_behind_a_noisy_angle_sensor_*`, found
+//! by `crane-sim campaign --wide --seed 3`, #4653).
+//!
+//! Forgetting the swing once the filters had converged left the phantom in
+//! W_fast and the averages: the reading fell to 0.71 × the load at 84.6°
+//! (campaign seed 1 #1830). A move begun within that second is seen only from
+//! its end. A move under way at power-up is the power-up check's
+//! ([`crate::cycle`]): FAULT until the boom stops.
+//!
 //! ## At rest after a move: the move's weighing held
 //!
 //! After a move stops, nothing in the bank damps the predicted swings: at a
@@ -575,6 +595,10 @@ pub struct StaticLoadBank<T> {
     /// one step when the chain bridged a gap in the readings, whose force is
     /// no reading the period's mean may take.
     advanced_s: T,
+    /// Time the bank has advanced since it started (s), counted up to the
+    /// filters' start-up, [`crate::load_estimate::CREEP_AFTER_START_S`]
+    /// (see the module doc, "Power-up").
+    started_s: T,
 }
 
 /// The bank's answer of one cycle.
@@ -625,6 +649,7 @@ impl<T: Real> StaticLoadBank<T> {
             lead_s: T::lit(0.0),
             period_mean: PeriodMean::new(),
             advanced_s: T::lit(0.0),
+            started_s: T::lit(0.0),
         }
     }
 
@@ -689,7 +714,12 @@ impl<T: Real> StaticLoadBank<T> {
         // The pendulums move with the boom, not with the sensor's noise
         // (see SWING_DEADBAND_RAD_S).
         let r0 = T::lit(SWING_DEADBAND_RAD_S);
-        let (drive_rate, drive_accel) = if rate_rad_s > r0 {
+        // The filters' start-up drives no pendulum and is no luff (see the
+        // module doc, "Power-up").
+        let starting = self.started_s < T::lit(crate::load_estimate::CREEP_AFTER_START_S);
+        let (drive_rate, drive_accel) = if starting {
+            (T::lit(0.0), T::lit(0.0))
+        } else if rate_rad_s > r0 {
             (rate_rad_s - r0, accel_rad_s2)
         } else if rate_rad_s < -r0 {
             (rate_rad_s + r0, accel_rad_s2)
@@ -720,7 +750,10 @@ impl<T: Real> StaticLoadBank<T> {
             T::lit(0.0)
         };
         self.advanced_s += self.dt_s;
-        let still = rate_rad_s.abs() <= T::lit(MOVING_RAD_S);
+        if starting {
+            self.started_s += self.dt_s;
+        }
+        let still = starting || rate_rad_s.abs() <= T::lit(MOVING_RAD_S);
         self.settled = settled;
         if still {
             // A move ends: its last weighing is held (see `update`).
