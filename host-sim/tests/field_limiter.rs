@@ -543,40 +543,50 @@ fn no_false_overload_at_85_percent_f32() {
 /// OVERLOAD never before true u = 1/1.1 and always before 1.05.
 fn lowering_past_rated_radius(precision: Precision, ropes: &[Rope], seals_of: &[Seals]) {
     let mut failures = Vec::new();
-    for (dur, ramp) in [(15.0, 1.0), (45.0, 1.5)] {
-        for rated_at in [45.0f64, 30.0] {
-            let w = rated_kg(rated_at.to_radians());
-            for shape in [RampShape::Linear, RampShape::Cycloidal] {
-                for &rope in ropes {
-                    for &seals in seals_of {
-                        let sc = Scenario { load_kg: w, from_deg: 80.0, to_deg: 20.0, duration_s: dur, ramp_s: ramp, shape, rope, seals, lift_off_s: None, seed: 9 };
-                        let pts = replay(&sc, precision);
-                        let t105 = pts.iter().find(|p| p.u >= 1.05).map(|p| p.t);
-                        let first = first_overload(&pts);
-                        let lowest = lowest_onset_u(&pts);
-                        println!(
-                            "{:<60} first OVERLOAD at true u {}, lowest onset u {}",
-                            sc.name(),
-                            first.map_or("none".into(), |f| format!("{:.3}", f.1)),
-                            lowest.map_or("none".into(), |l| format!("{l:.3}"))
-                        );
-                        match (first, t105) {
-                            (None, _) => failures.push(format!("{}: no OVERLOAD", sc.name())),
-                            (Some((t, u)), Some(t105)) if t > t105 => failures.push(format!("{}: OVERLOAD at u {u:.3}, after 1.05", sc.name())),
-                            _ => {}
-                        }
-                        if let Some(l) = lowest {
-                            if l < 1.0 / 1.1 {
-                                failures.push(format!("{}: OVERLOAD at true u {l:.3} < 1/1.1", sc.name()));
-                            }
-                        }
-                    }
-                }
+    for sc in lowering_scenarios(&[(80.0, 20.0, 15.0, 1.0), (80.0, 20.0, 45.0, 1.5)], ropes, seals_of) {
+        let pts = replay(&sc, precision);
+        let t105 = pts.iter().find(|p| p.u >= 1.05).map(|p| p.t);
+        let first = first_overload(&pts);
+        let lowest = lowest_onset_u(&pts);
+        println!(
+            "{:<60} first OVERLOAD at true u {}, lowest onset u {}",
+            sc.name(),
+            first.map_or("none".into(), |f| format!("{:.3}", f.1)),
+            lowest.map_or("none".into(), |l| format!("{l:.3}"))
+        );
+        match (first, t105) {
+            (None, _) => failures.push(format!("{}: no OVERLOAD", sc.name())),
+            (Some((t, u)), Some(t105)) if t > t105 => failures.push(format!("{}: OVERLOAD at u {u:.3}, after 1.05", sc.name())),
+            _ => {}
+        }
+        if let Some(l) = lowest {
+            if l < 1.0 / 1.1 {
+                failures.push(format!("{}: OVERLOAD at true u {l:.3} < 1/1.1", sc.name()));
             }
         }
     }
     println!("{precision:?}: {} failures of {}", failures.len(), 8 * ropes.len() * seals_of.len());
     assert!(failures.is_empty(), "{failures:#?}");
+}
+
+/// The lowerings past the rated radius of `moves` (from, to, duration,
+/// ramp): the loads rated at 45° and 30°, both ramp shapes, each of `ropes`
+/// and `seals_of`.
+fn lowering_scenarios(moves: &[(f64, f64, f64, f64)], ropes: &[Rope], seals_of: &[Seals]) -> Vec<Scenario> {
+    let mut out = Vec::new();
+    for &(from, to, dur, ramp) in moves {
+        for rated_at in [45.0f64, 30.0] {
+            let w = rated_kg(rated_at.to_radians());
+            for shape in [RampShape::Linear, RampShape::Cycloidal] {
+                for &rope in ropes {
+                    for &seals in seals_of {
+                        out.push(Scenario { load_kg: w, from_deg: from, to_deg: to, duration_s: dur, ramp_s: ramp, shape, rope, seals, lift_off_s: None, seed: 9 });
+                    }
+                }
+            }
+        }
+    }
+    out
 }
 
 /// [`lowering_past_rated_radius`]'s bounds for lowerings (`moves`: from,
@@ -587,25 +597,15 @@ fn lowering_past_rated_radius(precision: Precision, ropes: &[Rope], seals_of: &[
 /// case's lowest onset.
 fn lowerings(precision: Precision, moves: &[(f64, f64, f64, f64)]) -> Vec<String> {
     let mut failures = Vec::new();
-    for &(from, to, dur, ramp) in moves {
-        for rated_at in [45.0f64, 30.0] {
-            let w = rated_kg(rated_at.to_radians());
-            for shape in [RampShape::Linear, RampShape::Cycloidal] {
-                for rope in ROPES {
-                    for seals in SEALS {
-                        let sc = Scenario { load_kg: w, from_deg: from, to_deg: to, duration_s: dur, ramp_s: ramp, shape, rope, seals, lift_off_s: None, seed: 9 };
-                        let pts = replay(&sc, precision);
-                        let onset = lowest_onset_u(&pts);
-                        println!("{:<60} lowest OVERLOAD onset at true u {}", sc.name(), onset.map_or("none".into(), |u| format!("{u:.3}")));
-                        if let Some(u) = onset.filter(|&u| u < 1.0 / 1.1) {
-                            failures.push(format!("{}: OVERLOAD at true u {u:.3}", sc.name()));
-                        }
-                        let late = uncut(&pts).next().map(|q| format!("{}: {:?} at {:.2} s, true u {:.3}", sc.name(), q.state, q.t, q.u));
-                        failures.extend(late);
-                    }
-                }
-            }
+    for sc in lowering_scenarios(moves, &ROPES, &SEALS) {
+        let pts = replay(&sc, precision);
+        let onset = lowest_onset_u(&pts);
+        println!("{:<60} lowest OVERLOAD onset at true u {}", sc.name(), onset.map_or("none".into(), |u| format!("{u:.3}")));
+        if let Some(u) = onset.filter(|&u| u < 1.0 / 1.1) {
+            failures.push(format!("{}: OVERLOAD at true u {u:.3}", sc.name()));
         }
+        let late = uncut(&pts).next().map(|q| format!("{}: {:?} at {:.2} s, true u {:.3}", sc.name(), q.state, q.t, q.u));
+        failures.extend(late);
     }
     failures
 }

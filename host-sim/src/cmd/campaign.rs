@@ -192,16 +192,14 @@ impl Crane {
         };
         let law = |a: f64, b: f64| if seal { FrictionLaw::Seal { base_n: a, per_force: b } } else { FrictionLaw::Constant { force_n: a } };
         let first_order = index % 4 >= 2;
-        let (hz, zeta, tau) = if index == 0 { (2.0, 0.7, 0.2) } else { (r.uniform(1.5, 3.0), r.uniform(0.5, 0.9), r.uniform(0.1, 0.3)) };
-        let pendulum = if first_order { PendulumSensor::FirstOrder { tau_s: tau } } else { PendulumSensor::SecondOrder { hz, damping: zeta } };
+        let (mut hz, zeta, tau) = if index == 0 { (2.0, 0.7, 0.2) } else { (r.uniform(1.5, 3.0), r.uniform(0.5, 0.9), r.uniform(0.1, 0.3)) };
         let nominal = index == 0;
-        let release = if nominal { 0.0 } else { r.uniform(0.0, 1.0) };
+        let mut release = if nominal { 0.0 } else { r.uniform(0.0, 1.0) };
         let angle_offset = if nominal { 0.0 } else { r.uniform(-0.1, 0.1) };
         let pressure_offset = if nominal { 0.0 } else { r.uniform(-0.3, 0.3) };
-        let noise_bar = if nominal { 0.3 } else { r.uniform(0.1, 0.5) };
-        let noise_deg = if nominal { 0.03 } else { r.uniform(0.01, 0.05) };
+        let mut noise_bar = if nominal { 0.3 } else { r.uniform(0.1, 0.5) };
+        let mut noise_deg = if nominal { 0.03 } else { r.uniform(0.01, 0.05) };
         let mut onset = SensorModel::standard().friction_onset_deg_s;
-        let (mut release, mut noise_bar, mut noise_deg, mut hz, mut pendulum) = (release, noise_bar, noise_deg, hz, pendulum);
         if wide && !nominal {
             let mut w = Rng::new(seed ^ 0x57DE_0000 ^ ((index as u64) << 20));
             let log_uniform = |w: &mut Rng, lo: f64, hi: f64| (w.uniform(lo.ln(), hi.ln())).exp();
@@ -212,9 +210,9 @@ impl Crane {
             noise_deg *= k;
             if !first_order {
                 hz = w.uniform(1.0, 3.0);
-                pendulum = PendulumSensor::SecondOrder { hz, damping: zeta };
             }
         }
+        let pendulum = if first_order { PendulumSensor::FirstOrder { tau_s: tau } } else { PendulumSensor::SecondOrder { hz, damping: zeta } };
         let sensors = SensorModel {
             seed: 0,
             friction_up: law(ua, ub),
