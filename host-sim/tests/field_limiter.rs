@@ -2683,3 +2683,55 @@ fn a_load_added_at_rest_with_stuck_seals_or_angle_noise_known_gap() {
     with_setting(&NOISE_DEG, Some(0.09), || if !run() { failed.push("0.09 deg of angle noise") });
     assert!(failed.is_empty(), "load added at rest late with {failed:?}");
 }
+
+/// Switched on at a steep boom behind noisy pressure sensors: 80 % of the
+/// load rated at 75° hangs at 85°, 82° or 78° (a 20 s raise or lowering of
+/// 7° after 2 s at rest; every rope, both friction laws, 8 noise draws) with
+/// 0.85 bar of pressure noise (synth's 0.3 × 2.8; the wide campaign's cranes
+/// reach 1.5). At 85° the load's arm is a tenth of the boom, so one
+/// sample's noise weighs a lot. Until the move nothing WARNs (u ≥ 0.9, where
+/// the ×1.05 reading of this load is 0.84), and from 0.1 s after power-up
+/// the estimate is within the band's 1.10 of the true load (95th
+/// percentile; measured p5/p50/p95 1.029/1.052/1.072 and highest 1.098 in
+/// f64, 1.074 and 1.100 in f32).
+/// Before the force filters started from the mean of their samples so far
+/// and the bank's averages followed the first 0.1 s both ways
+/// (`moment_limiter::static_load`, "Power-up"), the averages kept the
+/// first sample's noise for seconds: 12 of these 192 WARNed from 0.05 s
+/// (p95 1.126, highest 1.142), and 7.7 t at 84° (campaign
+/// `--wide --seed 6`, #538) read u 0.92 for a true 0.77, an OVERLOAD with
+/// 0.13° of angle noise.
+fn switched_on_at_a_steep_boom_behind_noisy_pressure_sensors(precision: Precision) {
+    let mut failures = Vec::new();
+    let mut ratios = Vec::new();
+    with_setting(&NOISE_BAR, Some(0.85), || {
+        for (from, to) in [(85.0, 78.0), (82.0, 75.0), (78.0, 85.0)] {
+            for rope in ROPES {
+                for seals in SEALS {
+                    for seed in 1..=8 {
+                        let sc = Scenario { load_kg: 0.8 * rated_kg(75f64.to_radians()), from_deg: from, to_deg: to, duration_s: 20.0, ramp_s: 2.0, shape: RampShape::Cycloidal, rope, seals, lift_off_s: None, seed };
+                        let pts = replay(&sc, precision);
+                        ratios.extend(pts.iter().filter(|q| q.t >= 0.1 && q.t < HOLD_BEFORE_S).map(|q| q.ratio));
+                        if let Some(q) = pts.iter().filter(|q| q.t < HOLD_BEFORE_S).find(|q| q.state != LimiterState::Normal) {
+                            failures.push(format!("{} seed {seed}: {:?} at {:.2} s", sc.name(), q.state, q.t));
+                        }
+                    }
+                }
+            }
+        }
+    });
+    ratios.sort_by(f64::total_cmp);
+    let at = |p: f64| ratios[((ratios.len() - 1) as f64 * p) as usize];
+    println!("{precision:?}: estimate/true from 0.1 s to the move p5/p50/p95 {:.3}/{:.3}/{:.3}, highest {:.3}; {} of 192 WARN or worse", at(0.05), at(0.5), at(0.95), at(1.0), failures.len());
+    assert!(failures.is_empty() && at(0.95) <= 1.1, "p95 {:.3}: {failures:#?}", at(0.95));
+}
+
+#[test]
+fn switched_on_at_a_steep_boom_behind_noisy_pressure_sensors_f64() {
+    switched_on_at_a_steep_boom_behind_noisy_pressure_sensors(Precision::F64);
+}
+
+#[test]
+fn switched_on_at_a_steep_boom_behind_noisy_pressure_sensors_f32() {
+    switched_on_at_a_steep_boom_behind_noisy_pressure_sensors(Precision::F32);
+}

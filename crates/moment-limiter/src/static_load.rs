@@ -140,6 +140,21 @@
 //! `a_lowering_right_after_a_lift_off_behind_a_noisy_angle_sensor_*`, found
 //! by `crane-sim campaign --wide --seed 3`, #4653).
 //!
+//! **The first samples.** The filters start at the first reading, and the
+//! bank's averages are raised to W_fast at once but lowered only at their
+//! pace: they kept the first sample's noise for seconds. At a steep boom
+//! the load moves the force little (at 84° its arm is a tenth of the boom),
+//! so a pressure's noise weighs a lot: 7.7 t switched on at 84° behind
+//! 0.85 bar of pressure noise read u 0.92 at the first sample for a true
+//! 0.77 (0.81 with the ×1.05 reading), and WARNING for 6.5 s; with 0.13° of
+//! angle noise too, OVERLOAD (`crane-sim campaign --wide --seed 6`, #538).
+//! So the force filters start from the mean of their samples so far
+//! ([`crate::filter::LowPass::starting_from_the_mean`]), and for the first
+//! [`FIRST_SAMPLES_S`] the stage S and the averages follow W_fast both
+//! ways. That case now reads 0.82 from 0.1 s on (0.88 after 0.01 s), no
+//! WARNING. Neither delays a heavier load: the filters' weights on later
+//! samples only grow, and the averages follow W_fast up at once as before.
+//!
 //! Forgetting the swing once the filters had converged left the phantom in
 //! W_fast and the averages: the reading fell to 0.71 × the load at 84.6°
 //! (campaign seed 1 #1830). A move begun within that second is seen only from
@@ -435,6 +450,16 @@ pub const HELD_LENGTHS_M: [f64; 10] = [
 
 /// Number of hypotheses: the paid-out rope and the held lengths.
 pub const HYPOTHESES: usize = 1 + HELD_LENGTHS_M.len();
+
+/// How long after the bank starts the stage S and the averages follow the
+/// lowest reading W_fast both ways (s). The force filter starts from the
+/// mean of its samples so far ([`crate::filter::LowPass::starting_from_the_mean`]),
+/// whose noise falls as 1/√n; the averages, raised to W_fast but lowered
+/// only at their pace, kept the first sample's noise for seconds (see the
+/// module doc, "Power-up"). Short: a move that starts this soon after
+/// power-up and passes the power-up check (under 0.2° in 0.3 s) dips the
+/// force by little in it.
+pub const FIRST_SAMPLES_S: f64 = 0.1;
 
 /// Time constant of each stage of the slow average W̄_k (s): longer than
 /// the swing of the longest rope (9.5 s period at 22 m) over 2π.
@@ -1025,10 +1050,13 @@ impl<T: Real> StaticLoadBank<T> {
             // No hypothesis can weigh: the load hanging straight and still.
             None => terms.at_rest.solve(force)?,
         };
-        // One stage against the bounce.
+        // One stage against the bounce. Not over the first
+        // [`FIRST_SAMPLES_S`], whose force is the mean of its samples so far
+        // (see the module doc, "Power-up").
+        let first = self.started_s < T::lit(FIRST_SAMPLES_S);
         let fast = match self.fast_stage {
-            Some(y) => y + gain * (fast - y),
-            None => fast,
+            Some(y) if !first => y + gain * (fast - y),
+            _ => fast,
         };
         self.fast_stage = Some(fast);
         self.follow_jump(&factors, agree, settle);
@@ -1041,7 +1069,11 @@ impl<T: Real> StaticLoadBank<T> {
         // at the end of the move): maybe the true one.
         let mut unweighed = false;
         for ((h, factor), &possible) in self.hypotheses.iter_mut().zip(factors.iter()).zip(possible.iter()) {
-            if agree || light_raise {
+            if first {
+                // Both ways: no move has started to dip the force (see the
+                // module doc, "Power-up").
+                h.slow_kg = Some([fast; SLOW_STAGES]);
+            } else if agree || light_raise {
                 // Raised to W_fast at once (a lift-off), lowered only at the
                 // averages' pace: the force leads the lagging angle at the
                 // start of a move (its J·θ̈ and ride-down read as a dip of
@@ -1092,7 +1124,7 @@ impl<T: Real> StaticLoadBank<T> {
             .force_still_n
             .and_then(|f| terms.at_rest.scale_load_part(f_hi.unwrap_or(T::lit(1.0))).solve(f));
         self.still_stage = match (self.still_stage, still_now) {
-            (Some(y), Some(w)) => Some(y + gain * (w - y)),
+            (Some(y), Some(w)) if !first => Some(y + gain * (w - y)),
             (_, w) => w,
         };
         let load_kg = match (agree, self.still_stage) {

@@ -167,10 +167,10 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         Ok(Self {
             monitor: PlausibilityMonitor::new(config.plausibility).with_period_s(period_s),
             force_lag: (config.effective_angle_sensor_lag_s() > T::lit(0.0)).then(|| {
-                LowPass::new(T::lit(1.0) / (T::two_pi() * config.effective_angle_sensor_lag_s()), 1).with_period_s(period_s)
+                LowPass::new(T::lit(1.0) / (T::two_pi() * config.effective_angle_sensor_lag_s()), 1).with_period_s(period_s).starting_from_the_mean()
             }),
-            force_filter: LowPass::new(config.filter_hz, config.filter_stages).with_period_s(period_s),
-            force_still_filter: LowPass::new(config.filter_hz, config.filter_stages).with_period_s(period_s),
+            force_filter: LowPass::new(config.filter_hz, config.filter_stages).with_period_s(period_s).starting_from_the_mean(),
+            force_still_filter: LowPass::new(config.filter_hz, config.filter_stages).with_period_s(period_s).starting_from_the_mean(),
             static_friction_share: T::lit(1.0),
             since_restart_s: None,
             angle_filter: LowPass::new(config.filter_hz, config.filter_stages).with_period_s(period_s),
