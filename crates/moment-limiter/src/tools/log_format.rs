@@ -112,6 +112,9 @@ pub enum LogErrorKind {
     /// The header names this required column only in other letter case
     /// (`T_S`): names are case-sensitive.
     ColumnCase(&'static str),
+    /// The header names this required column only with another unit or
+    /// spelling (`t_ms`, `time`, `p1_psi`, `boom_angle_rad`).
+    ColumnUnit(&'static str),
     /// The header holds no comma but this separator (`;` or a tab): a
     /// spreadsheet's export in a locale that writes decimal commas.
     WrongSeparator(char),
@@ -172,6 +175,10 @@ impl fmt::Display for LogError {
             LogErrorKind::ColumnCase(c) => write!(
                 f,
                 "header has no column `{c}`, only one that differs from it in letter case: column names are case-sensitive"
+            ),
+            LogErrorKind::ColumnUnit(c) => write!(
+                f,
+                "header has no column `{c}`, only one like it in another unit or spelling: a log has `{T_S}` in seconds, `{P1_BAR}` and `{P2_BAR}` in bar and `{BOOM_ANGLE_DEG}` in degrees (docs/log-format.md)"
             ),
             LogErrorKind::WrongSeparator(c) => write!(
                 f,
@@ -515,7 +522,24 @@ fn parse_header(text: &str) -> Result<heapless::Vec<Column, MAX_COLUMNS>, LogErr
             // `T_S` from a tool that writes headers in capitals: say so
             // rather than only that `t_s` is missing.
             let in_other_case = text.split(',').any(|n| unquote(n).eq_ignore_ascii_case(name));
-            return Err(if in_other_case { LogErrorKind::ColumnCase(name) } else { LogErrorKind::MissingColumn(name) });
+            // `t_ms` or `boom_angle_rad`: say which units a log has.
+            let stems: &[&str] = match required {
+                Column::Time => &["t_", "time"],
+                Column::P1 => &["p1"],
+                Column::P2 => &["p2"],
+                _ => &["boom_angle", "angle"],
+            };
+            let in_other_unit = text.split(',').any(|n| {
+                let n = unquote(n).as_bytes();
+                stems.iter().any(|s| n.get(..s.len()).is_some_and(|head| head.eq_ignore_ascii_case(s.as_bytes())))
+            });
+            return Err(if in_other_case {
+                LogErrorKind::ColumnCase(name)
+            } else if in_other_unit {
+                LogErrorKind::ColumnUnit(name)
+            } else {
+                LogErrorKind::MissingColumn(name)
+            });
         }
     }
     Ok(columns)
@@ -574,6 +598,27 @@ mod tests {
         assert_eq!(e.kind, LogErrorKind::NotANumber(P1_BAR));
         let e = parse_all("\"T_S\",p1_bar,p2_bar,boom_angle_deg\n0,1,2,3\n").unwrap_err();
         assert_eq!(e.kind, LogErrorKind::ColumnCase(T_S));
+    }
+
+    /// A column in another unit or spelling is named as such, with the
+    /// units a log has; an unrelated column is only missing.
+    #[test]
+    fn a_column_in_another_unit_is_named() {
+        for (header, column) in [
+            ("t_ms,p1_bar,p2_bar,boom_angle_deg", T_S),
+            ("Time,p1_bar,p2_bar,boom_angle_deg", T_S),
+            ("t_s,p1_psi,p2_bar,boom_angle_deg", P1_BAR),
+            ("t_s,p1_bar,P2_MPa,boom_angle_deg", P2_BAR),
+            ("t_s,p1_bar,p2_bar,boom_angle_rad", BOOM_ANGLE_DEG),
+            ("t_s,p1_bar,p2_bar,angle", BOOM_ANGLE_DEG),
+        ] {
+            let e = parse_all(&format!("{header}\n0,1,2,3\n")).unwrap_err();
+            assert_eq!((e.line, e.kind), (1, LogErrorKind::ColumnUnit(column)), "{header}");
+            let msg = e.to_string();
+            assert!(msg.contains("in seconds") && msg.contains("in degrees"), "{msg}");
+        }
+        let e = parse_all("seconds,p1_bar,p2_bar,boom_angle_deg\n0,1,2,3\n").unwrap_err();
+        assert_eq!(e.kind, LogErrorKind::MissingColumn(T_S));
     }
 
     #[test]
