@@ -129,10 +129,15 @@ fn read_log(path: &Path, load_kg: f64) -> anyhow::Result<Log> {
                 );
             }
         }
-        p1_sum += record.frame.p1_bar;
-        p2_sum += record.frame.p2_bar;
+        // A reading that is no number (NaN, inf) is a sensor fault, which
+        // the limiter leaves out of the fit; in the means it read as
+        // swapped columns.
+        if record.frame.p1_bar.is_finite() && record.frame.p2_bar.is_finite() {
+            p1_sum += record.frame.p1_bar;
+            p2_sum += record.frame.p2_bar;
+            n_p += 1;
+        }
         angles.add(record.frame.boom_angle_deg);
-        n_p += 1;
         frames.push((record.line, record.frame));
     }
     parser
