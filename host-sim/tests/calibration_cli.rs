@@ -33,6 +33,25 @@ fn calibrate(logs: &[&Path], out: &Path) -> std::process::Output {
     bin().arg("calibrate").args(logs).arg("--out").arg(out).output().unwrap()
 }
 
+/// Writes `from` to `to` with each data row (counted from 1) replaced by
+/// what `row` makes of it and its fields; comments and the header as they are.
+fn rewrite_rows(from: &Path, to: &Path, mut row: impl FnMut(usize, &str, &[&str]) -> String) {
+    let mut n = 0;
+    let body: String = std::fs::read_to_string(from)
+        .unwrap()
+        .lines()
+        .map(|l| {
+            let f: Vec<&str> = l.split(',').collect();
+            if l.starts_with('#') || f.len() < 4 || f[0] == "t_s" {
+                return format!("{l}\n");
+            }
+            n += 1;
+            format!("{}\n", row(n, l, &f))
+        })
+        .collect();
+    std::fs::write(to, body).unwrap();
+}
+
 fn key(json: &serde_json::Value, k: &str) -> f64 {
     json[k].as_f64().unwrap_or_else(|| panic!("{k} in {json}"))
 }
@@ -92,19 +111,7 @@ fn refuses_swapped_pressures_a_load_and_a_missing_direction() {
 
     // p1 and p2 swapped in the up run.
     let swapped = dir.path().join("swapped.csv");
-    let body: String = std::fs::read_to_string(&up)
-        .unwrap()
-        .lines()
-        .map(|l| {
-            let f: Vec<&str> = l.split(',').collect();
-            if l.starts_with('#') || f.len() < 4 || f[0] == "t_s" {
-                format!("{l}\n")
-            } else {
-                format!("{},{},{},{}\n", f[0], f[2], f[1], f[3..].join(","))
-            }
-        })
-        .collect();
-    std::fs::write(&swapped, body).unwrap();
+    rewrite_rows(&up, &swapped, |_, _, f| format!("{},{},{},{}", f[0], f[2], f[1], f[3..].join(",")));
     let out = calibrate(&[&swapped, &down], &cal);
     assert_eq!(out.status.code(), Some(1));
     assert!(text(&out.stderr).contains("look swapped"), "{}", text(&out.stderr));
@@ -120,19 +127,7 @@ fn refuses_swapped_pressures_a_load_and_a_missing_direction() {
             .output()
             .unwrap();
         assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
-        let body: String = std::fs::read_to_string(&log)
-            .unwrap()
-            .lines()
-            .map(|l| {
-                let f: Vec<&str> = l.split(',').collect();
-                if l.starts_with('#') || f.len() != 5 || f[0] == "t_s" {
-                    format!("{l}\n")
-                } else {
-                    format!("{},0\n", f[..4].join(","))
-                }
-            })
-            .collect();
-        std::fs::write(&log, body).unwrap();
+        rewrite_rows(&log, &log, |_, l, f| if f.len() == 5 { format!("{},0", f[..4].join(",")) } else { l.to_string() });
         loaded.push(log);
     }
     let out = calibrate(&[&loaded[0], &loaded[1]], &cal);
@@ -160,25 +155,12 @@ fn a_reading_that_is_no_number_is_left_out_not_read_as_swapped_columns() {
     assert_eq!(calibrate(&[&up, &down], &clean).status.code(), Some(0));
     for bad in ["nan", "inf", "-inf"] {
         let holed = dir.path().join(format!("holed_{bad}.csv"));
-        let mut row = 0;
-        let body: String = std::fs::read_to_string(&up)
-            .unwrap()
-            .lines()
-            .map(|l| {
-                let f: Vec<&str> = l.split(',').collect();
-                if l.starts_with('#') || f.len() < 4 || f[0] == "t_s" {
-                    return format!("{l}\n");
-                }
-                row += 1;
-                // p1 at rest and p2 in the move, one sample each.
-                match row {
-                    50 => format!("{},{bad},{}\n", f[0], f[2..].join(",")),
-                    700 => format!("{},{},{bad},{}\n", f[0], f[1], f[3..].join(",")),
-                    _ => format!("{l}\n"),
-                }
-            })
-            .collect();
-        std::fs::write(&holed, body).unwrap();
+        // p1 at rest and p2 in the move, one sample each.
+        rewrite_rows(&up, &holed, |n, l, f| match n {
+            50 => format!("{},{bad},{}", f[0], f[2..].join(",")),
+            700 => format!("{},{},{bad},{}", f[0], f[1], f[3..].join(",")),
+            _ => l.to_string(),
+        });
         let cal = dir.path().join(format!("cal_{bad}.json"));
         let out = calibrate(&[&holed, &down], &cal);
         let err = text(&out.stderr);
