@@ -2348,8 +2348,13 @@ fn slow_or_underdamped_pendulums_keep_the_bounds_f32() {
 /// the force stands for an instant 0.06 s later than the angle it is read
 /// at; lowering past the rated radius in 15 s on the 3 m rope is cut at true
 /// u 0.901–0.905, before 1/1.1 = 0.909 (toward safety; 3 of 32 lowerings,
-/// the other bounds and the band hold). What would close it: a second-order
-/// sensor model in the calibration and in the force's time alignment.
+/// the other bounds and the band hold). What would close it: a lag learned
+/// as the steady move's. Measured by setting the calibration's lag by hand
+/// (not a test): at 0.13 s or at the ramp lag 2ζ/ω_n = 0.159 s all 64
+/// lowerings hold (the 3 m rope cut at true u 0.939–0.970). The lag search
+/// fits a first-order lag through the runs' ramps too, where it shows, and
+/// an underdamped pendulum's ramp response is quicker than a first-order
+/// lag's; a second-order sensor model in the calibration would give both.
 #[test]
 #[ignore = "KNOWN GAP: behind a 1 Hz, zeta 0.5 pendulum three 15 s lowerings on the 3 m rope are cut at true u 0.901-0.905, before 1/1.1"]
 fn a_slow_underdamped_pendulum_known_gap() {
