@@ -410,6 +410,17 @@ fn uncut(points: &[Point]) -> impl Iterator<Item = &Point> {
     points.iter().filter(|q| q.u >= 1.05 && !cut(q))
 }
 
+/// The lowering bounds on the replay `points` of case `name`: an OVERLOAD
+/// onset before true u = 1/1.1, and the first sample at a true u ≥ 1.05
+/// that is not [`cut`] (late or released). Prints the lowest onset.
+fn lowering_bound_failures(name: &str, points: &[Point]) -> Vec<String> {
+    let onset = lowest_onset_u(points);
+    println!("{name:<66} lowest OVERLOAD onset at true u {}", onset.map_or("none".into(), |u| format!("{u:.3}")));
+    let early = onset.filter(|&u| u < 1.0 / 1.1).map(|u| format!("{name}: OVERLOAD at true u {u:.3}"));
+    let late = uncut(points).next().map(|q| format!("{name}: {:?} at {:.2} s, true u {:.3}", q.state, q.t, q.u));
+    early.into_iter().chain(late).collect()
+}
+
 /// From when on `ok` holds to the end of `after` (s after `since_s`);
 /// `None` when it does not hold at the end.
 fn held_from(after: &[&Point], since_s: f64, ok: impl Fn(&Point) -> bool) -> Option<f64> {
@@ -598,14 +609,7 @@ fn lowering_scenarios(moves: &[(f64, f64, f64, f64)], ropes: &[Rope], seals_of: 
 fn lowerings(precision: Precision, moves: &[(f64, f64, f64, f64)]) -> Vec<String> {
     let mut failures = Vec::new();
     for sc in lowering_scenarios(moves, &ROPES, &SEALS) {
-        let pts = replay(&sc, precision);
-        let onset = lowest_onset_u(&pts);
-        println!("{:<60} lowest OVERLOAD onset at true u {}", sc.name(), onset.map_or("none".into(), |u| format!("{u:.3}")));
-        if let Some(u) = onset.filter(|&u| u < 1.0 / 1.1) {
-            failures.push(format!("{}: OVERLOAD at true u {u:.3}", sc.name()));
-        }
-        let late = uncut(&pts).next().map(|q| format!("{}: {:?} at {:.2} s, true u {:.3}", sc.name(), q.state, q.t, q.u));
-        failures.extend(late);
+        failures.extend(lowering_bound_failures(&sc.name(), &replay(&sc, precision)));
     }
     failures
 }
@@ -654,13 +658,7 @@ fn a_lowering_right_after_a_lift_off_behind_a_noisy_angle_sensor(precision: Prec
             for seals in SEALS {
                 for seed in 1..=8 {
                     let pts = replay_rows(&program_rows(&p, seals, seed), seals, precision);
-                    let onset = lowest_onset_u(&pts);
-                    println!("{seals:?} seed {seed}: lowest OVERLOAD onset at true u {}", onset.map_or("none".into(), |u| format!("{u:.3}")));
-                    if let Some(u) = onset.filter(|&u| u < 1.0 / 1.1) {
-                        failures.push(format!("{seals:?} seed {seed}: OVERLOAD at true u {u:.3}"));
-                    }
-                    let late = uncut(&pts).next().map(|q| format!("{seals:?} seed {seed}: {:?} at {:.2} s, true u {:.3}", q.state, q.t, q.u));
-                    failures.extend(late);
+                    failures.extend(lowering_bound_failures(&format!("{seals:?} seed {seed}"), &pts));
                 }
             }
         });
@@ -811,15 +809,7 @@ fn lowering_after_a_load_added_at_rest(precision: Precision, rest: f64) -> Vec<S
                 let rows = program_rows(&raise_rest_lower(0.6 * w1, w1, rope, rest), seals, 9);
                 let pts = replay_rows(&rows, seals, precision);
                 let name = format!("60->80, {rest} s at rest, 60 % -> 100 % of rated at {rated_at}, 80->20 15s {rope:?} {seals:?}");
-                let onset = lowest_onset_u(&pts);
-                let late = uncut(&pts).next();
-                println!("{name:<78} lowest OVERLOAD onset at true u {}", onset.map_or("none".into(), |u| format!("{u:.3}")));
-                if let Some(u) = onset.filter(|&u| u < 1.0 / 1.1) {
-                    failures.push(format!("{name}: OVERLOAD at true u {u:.3}"));
-                }
-                if let Some(q) = late {
-                    failures.push(format!("{name}: {:?} at {:.2} s, true u {:.3}", q.state, q.t, q.u));
-                }
+                failures.extend(lowering_bound_failures(&name, &pts));
             }
         }
     }
