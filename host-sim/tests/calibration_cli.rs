@@ -29,6 +29,16 @@ fn unloaded(dir: &Path, direction: &str, extra: &[&str]) -> PathBuf {
     synth_run(dir, &format!("unloaded_{direction}_{}.csv", extra.len()), direction, "0", "10", seed, extra)
 }
 
+/// The unloaded up and down runs of [`unloaded`].
+fn unloaded_runs(dir: &Path, extra: &[&str]) -> (PathBuf, PathBuf) {
+    (unloaded(dir, "up", extra), unloaded(dir, "down", extra))
+}
+
+/// A calibration file (or any JSON file) as a value.
+fn read_json(path: &Path) -> serde_json::Value {
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
 fn calibrate(logs: &[&Path], out: &Path) -> std::process::Output {
     bin().arg("calibrate").args(logs).arg("--out").arg(out).output().unwrap()
 }
@@ -60,11 +70,11 @@ fn key(json: &serde_json::Value, k: &str) -> f64 {
 fn learns_the_friction_of_each_direction_and_the_offset_at_rest() {
     let dir = tempfile::tempdir().unwrap();
     // synth's default crane: 12 kN up, 8 kN down, no offsets.
-    let (up, down) = (unloaded(dir.path(), "up", &[]), unloaded(dir.path(), "down", &[]));
+    let (up, down) = unloaded_runs(dir.path(), &[]);
     let cal = dir.path().join("cal.json");
     let out = calibrate(&[&up, &down], &cal);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
-    let j: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&cal).unwrap()).unwrap();
+    let j = read_json(&cal);
     let (fu, fd, off) = (key(&j, "friction_up_n"), key(&j, "friction_down_n"), key(&j, "force_offset_n"));
     println!("learned up {fu:.0} N, down {fd:.0} N, offset {off:.0} N (synthesized 12000 / 8000 / 0)");
     // Per direction, not the symmetric split (10 kN each, offset +2 kN).
@@ -88,11 +98,11 @@ fn learns_transducer_zero_offsets_across_their_tolerance() {
     for (bar, angle) in [("4", "0"), ("-4", "0"), ("3", "1.5"), ("-3", "-1.5")] {
         let extra = [format!("--pressure-offset-bar={bar}"), format!("--angle-offset-deg={angle}")];
         let extra: Vec<&str> = extra.iter().map(String::as_str).collect();
-        let (up, down) = (unloaded(dir.path(), "up", &extra), unloaded(dir.path(), "down", &extra));
+        let (up, down) = unloaded_runs(dir.path(), &extra);
         let cal = dir.path().join(format!("cal_{bar}_{angle}.json"));
         let out = calibrate(&[&up, &down], &cal);
         assert_eq!(out.status.code(), Some(0), "{bar} bar, {angle} deg: {}", text(&out.stderr));
-        let j: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&cal).unwrap()).unwrap();
+        let j = read_json(&cal);
         let off = key(&j, "force_offset_n");
         let synthesized = bar.parse::<f64>().unwrap() * 1e5 * area_m2;
         println!("{bar} bar, pendulum {angle} deg: offset learned {off:.0} N, the transducers' {synthesized:.0} N");
@@ -106,7 +116,7 @@ fn learns_transducer_zero_offsets_across_their_tolerance() {
 #[test]
 fn refuses_swapped_pressures_a_load_and_a_missing_direction() {
     let dir = tempfile::tempdir().unwrap();
-    let (up, down) = (unloaded(dir.path(), "up", &[]), unloaded(dir.path(), "down", &[]));
+    let (up, down) = unloaded_runs(dir.path(), &[]);
     let cal = dir.path().join("cal.json");
 
     // p1 and p2 swapped in the up run.
@@ -150,7 +160,7 @@ fn refuses_swapped_pressures_a_load_and_a_missing_direction() {
 #[test]
 fn a_reading_that_is_no_number_is_left_out_not_read_as_swapped_columns() {
     let dir = tempfile::tempdir().unwrap();
-    let (up, down) = (unloaded(dir.path(), "up", &[]), unloaded(dir.path(), "down", &[]));
+    let (up, down) = unloaded_runs(dir.path(), &[]);
     let clean = dir.path().join("clean.json");
     assert_eq!(calibrate(&[&up, &down], &clean).status.code(), Some(0));
     for bad in ["nan", "inf", "-inf"] {
@@ -166,10 +176,7 @@ fn a_reading_that_is_no_number_is_left_out_not_read_as_swapped_columns() {
         let err = text(&out.stderr);
         assert_eq!(out.status.code(), Some(0), "{bad}: {err}");
         assert!(err.contains("samples with a sensor or model fault left out"), "{bad}: {err}");
-        let (a, b): (serde_json::Value, serde_json::Value) = (
-            serde_json::from_str(&std::fs::read_to_string(&clean).unwrap()).unwrap(),
-            serde_json::from_str(&std::fs::read_to_string(&cal).unwrap()).unwrap(),
-        );
+        let (a, b) = (read_json(&clean), read_json(&cal));
         for k in ["friction_up_n", "friction_down_n"] {
             assert!((key(&a, k) - key(&b, k)).abs() <= 0.01 * key(&a, k), "{bad} {k}: {} against {}", key(&b, k), key(&a, k));
         }
@@ -203,7 +210,7 @@ fn learns_the_seal_law_from_unloaded_runs_and_better_with_a_test_weight() {
     // The fit's residuals per direction and what was not learned are printed.
     assert!(stdout.contains("up   a=") && stdout.contains("down a=") && stdout.contains("residual rms="), "{stdout}");
     assert!(stdout.contains("not observable") && stdout.contains("pendulum"), "{stdout}");
-    let j: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&cal).unwrap()).unwrap();
+    let j = read_json(&cal);
     assert_eq!(j["version"], 3);
     // A constant law learned unloaded (≈ 87 kN) is off at a heavy lift's
     // 300 kN by b·213 kN: 6.4 kN up, 4.3 kN down.
@@ -236,7 +243,7 @@ fn learns_the_seal_law_from_unloaded_runs_and_better_with_a_test_weight() {
         .unwrap();
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     println!("{}", text(&out.stdout));
-    let j2: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&cal2).unwrap()).unwrap();
+    let j2 = read_json(&cal2);
     let (ku_, kd_) = law_errors(&j2, 300_000.0);
     println!("with 3 t: friction error at 300 kN up {ku_:+.0} N, down {kd_:+.0} N");
     assert!(ku_.abs() < 1_000.0 && kd_.abs() < 1_000.0, "{ku_} {kd_}");
@@ -322,7 +329,7 @@ fn learns_the_angle_sensors_lag_from_unloaded_runs() {
             assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
             let stdout = text(&out.stdout);
             assert!(stdout.contains("angle sensor lag") && stdout.contains("s learned"), "{stdout}");
-            let j: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&cal).unwrap()).unwrap();
+            let j = read_json(&cal);
             assert_eq!(j["version"], 3);
             let lag = key(&j, "angle_sensor_lag_s");
             assert!(stdout.contains(&format!("angle_sensor_lag_s={lag:.3}")), "{stdout}");
@@ -347,17 +354,17 @@ fn keeps_the_default_lag_when_the_runs_do_not_show_it() {
     let stdout = text(&out.stdout);
     println!("{stdout}");
     assert!(stdout.contains("angle sensor lag NOT observable") && stdout.contains("default 0.111 s kept"), "{stdout}");
-    let j: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&cal).unwrap()).unwrap();
+    let j = read_json(&cal);
     assert!((key(&j, "angle_sensor_lag_s") - PENDULUM_2HZ_07_LAG_S).abs() < 1e-12, "{j}");
 }
 
 #[test]
 fn a_version_1_calibration_file_still_replays_as_constant_friction() {
     let dir = tempfile::tempdir().unwrap();
-    let (up, down) = (unloaded(dir.path(), "up", &[]), unloaded(dir.path(), "down", &[]));
+    let (up, down) = unloaded_runs(dir.path(), &[]);
     let cal = dir.path().join("cal.json");
     assert_eq!(calibrate(&[&up, &down], &cal).status.code(), Some(0));
-    let j: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&cal).unwrap()).unwrap();
+    let j = read_json(&cal);
     // The same values as a version-1 file (b = 0; the constant crane's b is small).
     let v1 = dir.path().join("v1.json");
     let v1_b0 = dir.path().join("v2_b0.json");
