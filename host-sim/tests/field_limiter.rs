@@ -935,23 +935,15 @@ fn inched_lowering_known_gap() {
     assert!(early.is_empty(), "{early:#?}");
 }
 
-/// KNOWN GAP, measured (f64, seal friction): the limiter switched on while
-/// the load swings (a power cut or a watchdog reset right after a move):
-/// 85 % of the rated load at the lower angle moved 40° → 80°, 40° → 60° or
-/// 80° → 40° in 10 s on every rope, the limiter started 0.5 s or 3 s after
-/// the stop, 30 s at rest. At power-up the bank takes the load hanging
-/// still (its ropes swing with the boom's moves, and it has seen none), so
-/// the swing reads as load: on every rope at 40° → 60°, and on the thesis
-/// rope and the 17 m held one, 1.10–1.64 × the load and no OVERLOAD; on the
-/// 3 m and 10 m held ropes up to 3.1 × the load at 80° (true u 0.46) and
-/// 1.2–1.5 × at 40° (true u 0.85), an OVERLOAD for 11–30 s of the 30 s at
-/// rest (8 of 24 cases). It
-/// errs toward cutting: the moment-reducing motions stay free, and setting
-/// the load down ends it.
-#[test]
-#[ignore = "KNOWN GAP: switched on while the load swings, the swing reads as load (up to 3.1 x at 80 deg on a 3 m rope): OVERLOAD at true u 0.46-0.85"]
-fn power_up_with_the_load_swinging_known_gap() {
-    let mut failures = Vec::new();
+/// The limiter switched on while the load swings (a power cut or a watchdog
+/// reset right after a move): 85 % of the rated load at the lower angle
+/// moved 40° → 80°, 40° → 60° or 80° → 40° in 10 s on every rope, seal
+/// friction, the limiter started 0.5 s or 3 s after the stop, 30 s at rest.
+/// Returns, per case, its name, the time in OVERLOAD (s), the highest
+/// estimate/true and the estimate/true from [`SWING_FOUND_S`] after power-up
+/// on (FAULT samples left out).
+fn power_up_with_the_load_swinging(precision: Precision) -> Vec<(String, f64, f64, Vec<f64>)> {
+    let mut cases = Vec::new();
     for (from, to) in [(40.0, 80.0), (40.0, 60.0), (80.0, 40.0)] {
         for rope in ROPES {
             let lowest = f64::min(from, to);
@@ -964,15 +956,85 @@ fn power_up_with_the_load_swinging_known_gap() {
             for after_stop in [0.5, 3.0] {
                 let on = HOLD_BEFORE_S + 10.0 + after_stop;
                 let rows: Vec<SynthRow> = rows.iter().filter(|r| r.t_s >= on).copied().collect();
-                let pts = replay_rows(&rows, Seals::Seal, Precision::F64);
-                let high = pts.iter().filter(|q| q.state != LimiterState::Fault).map(|q| q.ratio).fold(0.0, f64::max);
+                let pts = replay_rows(&rows, Seals::Seal, precision);
+                let weighing = |q: &&Point| q.state != LimiterState::Fault;
+                let high = pts.iter().filter(weighing).map(|q| q.ratio).fold(0.0, f64::max);
                 let overload_s = pts.iter().filter(|q| q.state == LimiterState::Overload).count() as f64 / rate_hz();
+                let late: Vec<f64> = pts.iter().filter(weighing).filter(|q| q.t >= on + SWING_FOUND_S).map(|q| q.ratio).collect();
                 let name = format!("{from:.0}->{to:.0} {rope:?}, switched on {after_stop} s after the stop");
-                println!("{name:<56} highest estimate/true {high:.3}, in OVERLOAD {overload_s:.1} s (true u {:.3})", pts.first().map_or(f64::NAN, |q| q.u));
-                if overload_s > 0.0 {
-                    failures.push(format!("{name}: OVERLOAD for {overload_s:.1} s"));
-                }
+                cases.push((name, overload_s, high, late));
             }
+        }
+    }
+    cases
+}
+
+/// Time after power-up by which the mean over one swing period has been
+/// found and confirmed on the ropes of [`power_up_with_the_load_swinging`]
+/// (s): P·4/3 and 1 s of confirmation is 5.6 s on the 3 m rope, 9.4 s on
+/// the 10 m one.
+const SWING_FOUND_S: f64 = 12.0;
+
+/// The 40° → 80° cases on the 3 m held rope and the thesis's paid-out rope
+/// (15 m at 80°), where the mean over one swing period is not the weighing
+/// 12 s after power-up (see `power_up_with_the_load_swinging_known_gap`).
+fn swing_not_found_in_time(name: &str) -> bool {
+    name.starts_with("40->80 Held(0.0)") || name.starts_with("40->80 Thesis")
+}
+
+/// Switched on while the load swings, the ropes hang still (they swing
+/// with the moves the bank has seen, and it has seen none) and the swing
+/// reads as load. Once the force repeats a swing period, the mean over it
+/// is the weighing (`moment_limiter::static_load`, "Switched on while the
+/// load swings"): from 12 s after power-up, on 20 of the 24 cases, the
+/// estimate reads 1.037–1.049 × the load at p5, 1.038–1.078 at p95 (1.223
+/// at most), f64 and f32 alike, and none is an OVERLOAD. Before, every one
+/// of the 24 read outside 1.00–1.10 there (p95 up to 2.98 on the 3 m rope at
+/// 80°, 2.42 on the 10 m one), and 8 were still an OVERLOAD.
+fn power_up_with_the_load_swinging_weighs_the_mean(precision: Precision) {
+    let mut failures = Vec::new();
+    for (name, overload_s, high, mut late) in power_up_with_the_load_swinging(precision) {
+        if swing_not_found_in_time(&name) {
+            continue;
+        }
+        let (p5, p95) = (percentile(&mut late, 0.05), percentile(&mut late, 0.95));
+        println!("{precision:?} {name:<56} from {SWING_FOUND_S} s: p5 {p5:.3} p95 {p95:.3}; highest {high:.3}, in OVERLOAD {overload_s:.1} s");
+        if !(p5 >= 1.0 && p95 <= 1.1) {
+            failures.push(format!("{name}: from {SWING_FOUND_S} s after power-up p5 {p5:.3}, p95 {p95:.3}"));
+        }
+    }
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
+#[test]
+fn power_up_with_the_load_swinging_weighs_the_mean_f64() {
+    power_up_with_the_load_swinging_weighs_the_mean(Precision::F64);
+}
+
+#[test]
+fn power_up_with_the_load_swinging_weighs_the_mean_f32() {
+    power_up_with_the_load_swinging_weighs_the_mean(Precision::F32);
+}
+
+/// KNOWN GAP, measured (f64, seal friction; the cases of
+/// [`power_up_with_the_load_swinging`]): until the mean over one swing
+/// period is found (P·4/3 and 1 s of confirmation after power-up) the
+/// swing reads as load: up to 3.1 × the load on the 3 m rope at 80° (true
+/// u 0.46) and 1.2–1.5 × at 40° (true u 0.85), an OVERLOAD for 4.8–10.6 s
+/// of the 30 s at rest on the 10 m rope at 80° and the 3 m and 10 m ropes
+/// at 40° (18–30 s before the mean weighed at power-up). On the 3 m rope at
+/// 80° the swing rocks the boom past the bank's move threshold (0.15 °/s),
+/// the bank counts it as a luff, and the mean is never the weighing:
+/// OVERLOAD for 11–13 s as before. It errs toward cutting: the
+/// moment-reducing motions stay free, and setting the load down ends it.
+#[test]
+#[ignore = "KNOWN GAP: switched on while the load swings, the swing reads as load until a swing period repeats (OVERLOAD for 4.8-10.6 s at true u 0.46-0.85); on a 3 m rope at 80 deg for 11-13 s"]
+fn power_up_with_the_load_swinging_known_gap() {
+    let mut failures = Vec::new();
+    for (name, overload_s, high, _) in power_up_with_the_load_swinging(Precision::F64) {
+        println!("{name:<56} highest estimate/true {high:.3}, in OVERLOAD {overload_s:.1} s");
+        if overload_s > 0.0 {
+            failures.push(format!("{name}: OVERLOAD for {overload_s:.1} s"));
         }
     }
     assert!(failures.is_empty(), "{failures:#?}");

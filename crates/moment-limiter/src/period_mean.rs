@@ -80,6 +80,13 @@
 //!   low between, no longer count;
 //! - otherwise it is a floor: it raises the reading, never lowers it.
 //!
+//! Settled before any move (switched on while the load swings), the ropes
+//! hang still and agree; there the mean is the weighing while the force is
+//! steady and [`PeriodMean::swings`]: it swings by more than [`CHANGE`] of
+//! the load's part plus [`CHANGE_FLOOR_N`] either side of the mean, a swing
+//! no rope predicts. Otherwise it is not read (see the bank's module doc,
+//! "Switched on while the load swings").
+//!
 //! ## When the load changes
 //!
 //! A load added (or set down) is a step in the force: its first bins no
@@ -239,6 +246,9 @@ pub struct PeriodMean<T> {
     period: Option<usize>,
     /// The mean the last search found, once its period is confirmed (N).
     mean_n: Option<T>,
+    /// The force's swing (max − min of its bins, N) over the data that
+    /// search compared, with its mean.
+    swing_n: Option<T>,
     /// Bins over which the searches in a row found the same period.
     confirmed: usize,
     /// The period (tenths of a bin) the run of searches began with.
@@ -286,7 +296,7 @@ impl<T: Real> Default for PeriodMean<T> {
 impl<T: Real> PeriodMean<T> {
     /// No data.
     pub fn new() -> Self {
-        Self { sums: [T::lit(0.0); BINS + 1], bins: 0, reference: T::lit(0.0), filling: (T::lit(0.0), T::lit(0.0)), period: None, mean_n: None, confirmed: 0, confirming: None, search: None, searched_to: 0, anchor: None, step: None }
+        Self { sums: [T::lit(0.0); BINS + 1], bins: 0, reference: T::lit(0.0), filling: (T::lit(0.0), T::lit(0.0)), period: None, mean_n: None, swing_n: None, confirmed: 0, confirming: None, search: None, searched_to: 0, anchor: None, step: None }
     }
 
     /// Forgets the data (the boom moved, the force was interrupted). The
@@ -299,6 +309,7 @@ impl<T: Real> PeriodMean<T> {
         self.filling = (T::lit(0.0), T::lit(0.0));
         self.period = None;
         self.mean_n = None;
+        self.swing_n = None;
         self.confirmed = 0;
         self.confirming = None;
         self.search = None;
@@ -615,8 +626,9 @@ impl<T: Real> PeriodMean<T> {
         // period leaves its means near a crest of the swing close (a 3.5 s
         // span passed for a 4.9 s swing), but not the force one span apart
         // (it differs by 2·A·sin(π·|P − span|/P)).
+        let mut swing = T::lit(0.0);
         let found = s.best.filter(|&(spread, p, m)| {
-            let swing = self.swing_n(s.end, p + p / 3).unwrap_or(T::lit(0.0));
+            swing = self.force_swing_n(s.end, p + p / 3).unwrap_or(T::lit(0.0));
             let part = (m - unloaded_n).abs();
             let allowed = (T::lit(SPREAD) * part).min(T::lit(SWING_SPREAD) * swing);
             let repeat = T::lit(REPEAT_SWING) * swing + T::lit(CHANGE_FLOOR_N);
@@ -637,12 +649,26 @@ impl<T: Real> PeriodMean<T> {
         self.searched_to = s.end;
         self.period = found.map(|b| b.1);
         self.mean_n = found.filter(|_| self.confirmed >= CONFIRM_BINS).map(|b| b.2);
+        self.swing_n = self.mean_n.map(|_| swing);
+    }
+
+    /// Whether the force the mean was found on swings by more than the
+    /// steadiness allows a bin to change ([`CHANGE`] of the load's part
+    /// plus [`CHANGE_FLOOR_N`]) either side of its mean: a swing the
+    /// readings of the moment would show; `false` without a mean.
+    pub fn swings(&self, unloaded_n: T) -> bool {
+        match (self.mean_n, self.swing_n) {
+            (Some(mean), Some(swing)) => {
+                swing > T::lit(2.0) * (T::lit(CHANGE) * (mean - unloaded_n).abs() + T::lit(CHANGE_FLOOR_N))
+            }
+            _ => false,
+        }
     }
 
     /// max − min of the bins over the `span_tenths` tenths of a bin (whole
     /// bins, rounded up) before bin count `end`, N.
     #[inline(never)]
-    fn swing_n(&self, end: usize, span_tenths: usize) -> Option<T> {
+    fn force_swing_n(&self, end: usize, span_tenths: usize) -> Option<T> {
         let first = end.checked_sub(span_tenths / 10 + 1)?;
         if !self.kept(first, end) {
             return None;
@@ -713,6 +739,22 @@ mod tests {
             let p = m.period_s().unwrap();
             assert!(((p / period).round() - p / period).abs() < 0.03, "{period} s found {p}");
         }
+    }
+
+    #[test]
+    fn a_swing_is_told_from_a_still_force_by_its_size() {
+        // Load part 110 kN: a bin may change by 3.3 kN + 1 kN, so a swing
+        // swings() when its max − min passes 8.6 kN (±4.3 kN).
+        let (unloaded, mean) = (200_000.0, 310_000.0);
+        let sine = |amplitude: f64| move |t: f64| mean + amplitude * (2.0 * PI * t / 4.7).sin();
+        for (amplitude, swings) in [(2_000.0, false), (4_000.0, false), (4_600.0, true), (60_000.0, true)] {
+            let mut m = PeriodMean::<f64>::new();
+            let got = feed(&mut m, 0.0, 4.7 * 1.34 + 1.3, unloaded, sine(amplitude));
+            assert!(got.is_some_and(|g| (g - mean).abs() < 300.0), "±{amplitude} N: {got:?}");
+            assert_eq!(m.swings(unloaded), swings, "±{amplitude} N");
+        }
+        // No mean, no swing.
+        assert!(!PeriodMean::<f64>::new().swings(unloaded));
     }
 
     #[test]

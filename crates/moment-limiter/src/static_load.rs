@@ -328,6 +328,38 @@
 //! before, is cut from 8.5 s after the take-up; added 14 s after, from 2.7 s
 //! (`host-sim` test `a_load_added_where_no_rope_follows_the_swing_*`).
 //!
+//! ## Switched on while the load swings
+//!
+//! The ropes swing with the moves the bank has seen. Switched on while the
+//! load swings (a power cut or a watchdog reset right after a move; a
+//! fault that broke the angle, [`StaticLoadBank::reset`]; a limiter
+//! switched on in motion that has seen the boom stop), it has seen none:
+//! every rope hangs still, they agree, and the swing reads as load. 85 % of
+//! rated after a 10 s move read 1.2–1.5 × the load at 40° and up to 3.1 ×
+//! at 80°, an OVERLOAD for 18–30 s of a 30 s rest on the 3 m and 10 m held
+//! ropes (`host-sim` test `power_up_with_the_load_swinging_*`).
+//!
+//! Whatever swings the load, the force over one of its periods averages to
+//! the load hanging still ([`crate::period_mean`]). So the mean runs at rest
+//! before any move too, and there, while it is found, the force still
+//! repeats it ([`PeriodMean::steady`]) and it swings by more than a steady
+//! bin may change either side of the mean ([`PeriodMean::swings`]: 3 % of
+//! the load's part and 1 kN; a swing the readings of the moment would show),
+//! it **is** the weighing although the ropes agree: no rope predicts a
+//! swing, so none is right. The averages are set to it (not only raised:
+//! they hold the crests the agreeing ropes raised them to), so a move
+//! starts from it. Before any move it is no floor and the period mean's
+//! step ([`PeriodMean::step_n`]) is not read, so a still load lifted at
+//! power-up is weighed as before: the mean needs a repeating swing, and a
+//! load taken up, a step of the force, ends it at once (the readings of the
+//! moment, which follow the force without delay, count again). From 12 s
+//! after power-up those cases read 1.037–1.049 × the load at p5,
+//! 1.038–1.078 at p95, no OVERLOAD. Until the mean is found (P·4/3 and 1 s
+//! of confirmation: 5.6 s on a 3 m rope, 9.4 s on a 10 m one) the crests
+//! still read as load: OVERLOAD for 4.8–10.6 s. On a 3 m rope at 80° the
+//! swing rocks the boom past [`MOVING_RAD_S`], the bank counts a luff and
+//! the mean never weighs (`power_up_with_the_load_swinging_known_gap`).
+//!
 //! ## At rest after a move: an overload stands
 //!
 //! Until the mean over a period is found, a load swinging at rest where no
@@ -398,7 +430,8 @@
 //! hook's, F − F_0 < F_W'·[`load_jump::MIN_AVERAGE_KG`] (the load at factor
 //! 1 under 500 kg), every rope hangs still and the bank weighs as after
 //! power-up: the ropes agree, the averages follow W_fast, nothing is held
-//! and no period's mean runs, so the next lift-off is weighed as the first
+//! and the period's mean weighs only a swing that repeats (see "Switched on
+//! while the load swings"), so the next lift-off is weighed as the first
 //! (now the same sample after 24 h as switched on, 0.77 s after it leaves
 //! the ground). A swinging load never reads that light for that long: its
 //! pull dips under an empty hook's for less than half a period (4.7 s at
@@ -416,8 +449,8 @@
 //! The cost per cycle: [`HYPOTHESES`] pendulums (one 10 ms sub-step at
 //! 100 Hz each), as many solutions of a quadratic, four filter stages and
 //! one division (the ratio ρ_k); at rest after a move as many factors of
-//! the led swings (a sine and cosine polynomial each), and the period
-//! mean's share of its search; no heap, fixed loops.
+//! the led swings (a sine and cosine polynomial each); settled, the period
+//! mean's share of its search (before any move too); no heap, fixed loops.
 
 use crane_model::loads::load_model::Quadratic;
 use crane_model::Real;
@@ -831,6 +864,16 @@ impl<T: Real> StaticLoadBank<T> {
         }
     }
 
+    /// Sets every average, and W_slow, to `w` (kg): the mean over one swing
+    /// period weighs a swing no rope predicts.
+    #[inline(never)]
+    fn set_averages(&mut self, w: T) {
+        for h in self.hypotheses.iter_mut() {
+            h.slow_kg = Some([w; SLOW_STAGES]);
+        }
+        self.slow_kg = Some(w);
+    }
+
     /// The factor of possible hypothesis `h`, if it can weigh (see the
     /// module doc): motion only, never the force.
     fn factor(&self, h: &Hypothesis<T>, led: Option<&LedFactors<T>>) -> Option<T> {
@@ -1137,7 +1180,7 @@ impl<T: Real> StaticLoadBank<T> {
         // bank's ropes read the swing of the wrong period high and low);
         // otherwise a floor: it raises the reading, never lowers it.
         let advanced = core::mem::replace(&mut self.advanced_s, T::lit(0.0));
-        let period_kg = if self.settled && self.moved {
+        let period_kg = if self.settled {
             // Over a bridged gap the whole time advanced is one step, which
             // the mean refuses (it starts again).
             self.period_mean.push(force, terms.at_rest.at_zero, advanced).and_then(|f| terms.at_rest.solve(f))
@@ -1146,19 +1189,29 @@ impl<T: Real> StaticLoadBank<T> {
             None
         };
         // A change of the load from a steady swing, read at once from the
-        // force's ratio to one period earlier: raises only.
-        let step_kg = self.period_mean.step_n().and_then(|f| terms.at_rest.solve(f));
-        let mean_weighs = period_kg.is_some() && !agree && self.period_mean.steady(terms.at_rest.at_zero);
+        // force's ratio to one period earlier: raises only. After a move.
+        let step_kg = self.period_mean.step_n().filter(|_| self.moved).and_then(|f| terms.at_rest.solve(f));
+        // Before any move the ropes hang still and agree: a swing the force
+        // repeats is one none of them predicts (see the module doc,
+        // "Switched on while the load swings").
+        let unseen_swing = !self.moved && self.period_mean.swings(terms.at_rest.at_zero);
+        let mean_weighs = period_kg.is_some() && (!agree || unseen_swing) && self.period_mean.steady(terms.at_rest.at_zero);
         let load_kg = match period_kg {
             Some(w) if mean_weighs => {
-                // The weighing at rest is the one the next move starts from
-                // (see the module doc, "The averages carry the rest's
-                // weighing into the next move").
-                self.raise_averages(w);
+                if unseen_swing {
+                    // The ropes' averages hold the swing's crests: the next
+                    // move starts from the mean instead.
+                    self.set_averages(w);
+                } else {
+                    // The weighing at rest is the one the next move starts
+                    // from (see the module doc, "The averages carry the
+                    // rest's weighing into the next move").
+                    self.raise_averages(w);
+                }
                 w
             }
-            Some(w) => load_kg.max(w),
-            None => load_kg,
+            Some(w) if self.moved => load_kg.max(w),
+            _ => load_kg,
         };
         let provisional = self.after_move && self.settled && self.still_s <= T::lit(REST_HOLD_S) && !agree && !mean_weighs;
         let load_kg = match step_kg {
