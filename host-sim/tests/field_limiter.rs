@@ -939,10 +939,10 @@ fn inched_lowering_known_gap() {
 /// reset right after a move): 85 % of the rated load at the lower angle
 /// moved 40° → 80°, 40° → 60° or 80° → 40° in 10 s on every rope, seal
 /// friction, the limiter started 0.5 s or 3 s after the stop, 30 s at rest.
-/// Returns, per case, its name, the time in OVERLOAD (s), the highest
-/// estimate/true and the estimate/true from [`SWING_FOUND_S`] after power-up
-/// on (FAULT samples left out).
-fn power_up_with_the_load_swinging(precision: Precision) -> Vec<(String, f64, f64, Vec<f64>)> {
+/// Returns, per case, its name, the time in OVERLOAD and in FAULT (s), the
+/// highest estimate/true and the estimate/true from [`SWING_FOUND_S`] after
+/// power-up on (FAULT samples left out).
+fn power_up_with_the_load_swinging(precision: Precision) -> Vec<(String, [f64; 2], f64, Vec<f64>)> {
     let mut cases = Vec::new();
     for (from, to) in [(40.0, 80.0), (40.0, 60.0), (80.0, 40.0)] {
         for rope in ROPES {
@@ -959,7 +959,8 @@ fn power_up_with_the_load_swinging(precision: Precision) -> Vec<(String, f64, f6
                 let pts = replay_rows(&rows, Seals::Seal, precision);
                 let weighing = |q: &&Point| q.state != LimiterState::Fault;
                 let high = pts.iter().filter(weighing).map(|q| q.ratio).fold(0.0, f64::max);
-                let overload_s = pts.iter().filter(|q| q.state == LimiterState::Overload).count() as f64 / rate_hz();
+                let time_in = |state| pts.iter().filter(|q| q.state == state).count() as f64 / rate_hz();
+                let overload_s = [time_in(LimiterState::Overload), time_in(LimiterState::Fault)];
                 let late: Vec<f64> = pts.iter().filter(weighing).filter(|q| q.t >= on + SWING_FOUND_S).map(|q| q.ratio).collect();
                 let name = format!("{from:.0}->{to:.0} {rope:?}, switched on {after_stop} s after the stop");
                 cases.push((name, overload_s, high, late));
@@ -975,9 +976,12 @@ fn power_up_with_the_load_swinging(precision: Precision) -> Vec<(String, f64, f6
 /// the 10 m one.
 const SWING_FOUND_S: f64 = 12.0;
 
-/// The 40° → 80° cases on the 3 m held rope and the thesis's paid-out rope
-/// (15 m at 80°), where the mean over one swing period is not the weighing
-/// 12 s after power-up (see `power_up_with_the_load_swinging_known_gap`).
+/// The 40° → 80° cases on the 3 m held rope (its swing takes p1 out of
+/// range every period, and each fault starts the mean again) and on the
+/// thesis's paid-out rope (at 80° the longest rope here, whose period is
+/// found only about 12 s after power-up: p95 1.17–1.23 from 12 s on), where
+/// the mean over one swing period is not yet the weighing 12 s after
+/// power-up (see `power_up_with_the_load_swinging_known_gap`).
 fn swing_not_found_in_time(name: &str) -> bool {
     name.starts_with("40->80 Held(0.0)") || name.starts_with("40->80 Thesis")
 }
@@ -993,7 +997,7 @@ fn swing_not_found_in_time(name: &str) -> bool {
 /// 80°, 2.42 on the 10 m one), and 8 were still an OVERLOAD.
 fn power_up_with_the_load_swinging_weighs_the_mean(precision: Precision) {
     let mut failures = Vec::new();
-    for (name, overload_s, high, mut late) in power_up_with_the_load_swinging(precision) {
+    for (name, [overload_s, _], high, mut late) in power_up_with_the_load_swinging(precision) {
         if swing_not_found_in_time(&name) {
             continue;
         }
@@ -1023,16 +1027,17 @@ fn power_up_with_the_load_swinging_weighs_the_mean_f32() {
 /// u 0.46) and 1.2–1.5 × at 40° (true u 0.85), an OVERLOAD for 4.8–10.6 s
 /// of the 30 s at rest on the 10 m rope at 80° and the 3 m and 10 m ropes
 /// at 40° (18–30 s before the mean weighed at power-up). On the 3 m rope at
-/// 80° the swing rocks the boom past the bank's move threshold (0.15 °/s),
-/// the bank counts it as a luff, and the mean is never the weighing:
-/// OVERLOAD for 11–13 s as before. It errs toward cutting: the
-/// moment-reducing motions stay free, and setting the load down ends it.
+/// 80° the swing's inward pull takes p1 under its range at every trough
+/// (FAULT for 15–16 s of the 30), each fault starts the mean again, and it
+/// is never the weighing: OVERLOAD for 11–13 s as before. It errs toward
+/// cutting: the moment-reducing motions stay free, and setting the load
+/// down ends it.
 #[test]
 #[ignore = "KNOWN GAP: switched on while the load swings, the swing reads as load until a swing period repeats (OVERLOAD for 4.8-10.6 s at true u 0.46-0.85); on a 3 m rope at 80 deg for 11-13 s"]
 fn power_up_with_the_load_swinging_known_gap() {
     let mut failures = Vec::new();
-    for (name, overload_s, high, _) in power_up_with_the_load_swinging(Precision::F64) {
-        println!("{name:<56} highest estimate/true {high:.3}, in OVERLOAD {overload_s:.1} s");
+    for (name, [overload_s, fault_s], high, _) in power_up_with_the_load_swinging(Precision::F64) {
+        println!("{name:<56} highest estimate/true {high:.3}, in OVERLOAD {overload_s:.1} s, in FAULT {fault_s:.1} s");
         if overload_s > 0.0 {
             failures.push(format!("{name}: OVERLOAD for {overload_s:.1} s"));
         }

@@ -357,8 +357,9 @@
 //! 1.038–1.078 at p95, no OVERLOAD. Until the mean is found (P·4/3 and 1 s
 //! of confirmation: 5.6 s on a 3 m rope, 9.4 s on a 10 m one) the crests
 //! still read as load: OVERLOAD for 4.8–10.6 s. On a 3 m rope at 80° the
-//! swing rocks the boom past [`MOVING_RAD_S`], the bank counts a luff and
-//! the mean never weighs (`power_up_with_the_load_swinging_known_gap`).
+//! swing's inward pull takes p1 under its range at every trough, each
+//! FAULT starts the mean again, and it never weighs
+//! (`power_up_with_the_load_swinging_known_gap`).
 //!
 //! ## At rest after a move: an overload stands
 //!
