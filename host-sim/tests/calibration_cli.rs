@@ -175,7 +175,9 @@ fn a_reading_that_is_no_number_is_left_out_not_read_as_swapped_columns() {
         let out = calibrate(&[&holed, &down], &cal);
         let err = text(&out.stderr);
         assert_eq!(out.status.code(), Some(0), "{bad}: {err}");
-        assert!(err.contains("samples with a sensor or model fault left out"), "{bad}: {err}");
+        // The first one named by its line (two comment lines and the
+        // header, then the 50th row) and its fault.
+        assert!(err.contains("2 samples with a sensor or model fault left out (the first at line 53: p1 not a number)"), "{bad}: {err}");
         let (a, b) = (read_json(&clean), read_json(&cal));
         for k in ["friction_up_n", "friction_down_n"] {
             assert!((key(&a, k) - key(&b, k)).abs() <= 0.01 * key(&a, k), "{bad} {k}: {} against {}", key(&b, k), key(&a, k));

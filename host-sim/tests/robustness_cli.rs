@@ -656,6 +656,28 @@ fn angles_in_radians(log: &Path, out: &Path) {
     std::fs::write(out, dst).unwrap();
 }
 
+/// A `t_s` column written in milliseconds makes every step of a 50 Hz log a
+/// 20 s gap: the replay is one FAULT from the second sample on. `replay`
+/// says what the column probably holds; an evenly stamped log and one with
+/// a single real gap get no such warning.
+#[test]
+fn a_time_column_in_milliseconds_is_named() {
+    let dir = tempfile::tempdir().unwrap();
+    let ms = dir.path().join("ms.csv");
+    rewrite_times(&example("safe_lift.csv"), &ms, |_, us| us * 1000);
+    let out = replay(&ms, &[]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = text(&out.stderr);
+    assert!(err.contains("warning: every step between the log's samples is a gap the limiter faults on (the shortest 20.000 s") && err.contains("If t_s holds milliseconds, divide it by 1000"), "{err}");
+    let out = replay(&example("safe_lift.csv"), &[]);
+    assert!(!text(&out.stderr).contains("milliseconds"), "{}", text(&out.stderr));
+    let gap = dir.path().join("gap.csv");
+    rewrite_times(&example("safe_lift.csv"), &gap, |row, us| if row >= 100 { us + 2_000_000 } else { us });
+    let out = replay(&gap, &[]);
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out.stdout));
+    assert!(!text(&out.stderr).contains("milliseconds"), "{}", text(&out.stderr));
+}
+
 /// A log whose angle column holds radians reads as a boom near horizontal,
 /// where the load's pressure reads as a far lighter load: the lowering of
 /// `overload_lowering.csv` (8 t, 75° → 40°, OVERLOAD from 7.24 s) replays

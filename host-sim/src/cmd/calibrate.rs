@@ -173,6 +173,8 @@ fn learn_log_with(log: &Log, lag_s: f64, keep: bool, steady: SteadyMotion<f64>) 
     let mut learner = CalibrationLearner::<f64>::with_steady_motion(steady).loaded(log.load_kg);
     let mut measurements = Vec::new();
     let mut faulted = 0u32;
+    // The first faulted sample's line and fault: what the user looks up.
+    let mut first_fault: Option<(u32, String)> = None;
     for (line, frame) in &log.frames {
         let report = limiter.step_frame(frame);
         // An implausibly negative load is the limiter's verdict on an
@@ -188,12 +190,19 @@ fn learn_log_with(log: &Log, lag_s: f64, keep: bool, steady: SteadyMotion<f64>) 
                     measurements.push(m);
                 }
             }
-            _ => faulted += 1,
+            (fault, _) => {
+                faulted += 1;
+                if first_fault.is_none() {
+                    let why = fault.map_or_else(|| "no measurement".to_string(), |f| f.to_string());
+                    first_fault = Some((*line, why));
+                }
+            }
         }
     }
     learner.end_of_log();
     if keep && faulted > 0 {
-        eprintln!("warning: {name}: {faulted} samples with a sensor or model fault left out");
+        let first = first_fault.map_or_else(String::new, |(line, why)| format!(" (the first at line {line}: {why})"));
+        eprintln!("warning: {name}: {faulted} samples with a sensor or model fault left out{first}");
     }
     Ok(Run {
         name: name.clone(),
