@@ -138,6 +138,9 @@ pub enum LogErrorKind {
     DecimalCommas,
     /// This field is empty.
     EmptyField(&'static str),
+    /// A data row whose time is the word `t_s`: a second header, as where
+    /// two logs were joined into one file.
+    SecondHeader,
     /// This field is not a number.
     NotANumber(&'static str),
     /// The time is not finite.
@@ -193,6 +196,9 @@ impl fmt::Display for LogError {
             LogErrorKind::TooManyColumns => write!(f, "header has more than {MAX_COLUMNS} columns"),
             LogErrorKind::MissingField(c) => write!(f, "field `{c}` missing (row too short)"),
             LogErrorKind::TooManyFields => f.write_str("more fields than the header has columns"),
+            LogErrorKind::SecondHeader => f.write_str(
+                "a second header: the file looks like two logs joined into one; replay each on its own",
+            ),
             LogErrorKind::TrailingComma => f.write_str(
                 "more fields than the header has columns: the row ends with a comma (the header does not)",
             ),
@@ -328,6 +334,9 @@ impl<T: Real> LogParser<T> {
                     kind => err(kind),
                 };
                 if column == Column::Time {
+                    if field == T_S {
+                        return Err(err(LogErrorKind::SecondHeader));
+                    }
                     time_us = Some(parse_time_us(field).map_err(named)?);
                     continue;
                 }
@@ -715,6 +724,11 @@ mod tests {
         assert!(e.to_string().contains("ends with a comma"), "{e}");
         let e = parse_all(&format!("{h}0,1,2,3,4, ,\n")).unwrap_err();
         assert_eq!(e.kind, LogErrorKind::TrailingComma);
+        // Two logs joined: the second one's comment is skipped, its header
+        // is named as what it is.
+        let e = parse_all(&format!("{h}0,1,2,3,4\n# next log\n{h}0,1,2,3,4\n")).unwrap_err();
+        assert_eq!((e.line, e.kind), (4, LogErrorKind::SecondHeader));
+        assert!(e.to_string().contains("two logs joined"), "{e}");
         let e = parse_all(&format!("{h}0,1,2,3,4,,5\n")).unwrap_err();
         assert_eq!(e.kind, LogErrorKind::TooManyFields);
         let e = parse_all(&format!("{h}0,,2,3,4\n")).unwrap_err();
