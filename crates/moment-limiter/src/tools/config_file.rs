@@ -208,6 +208,9 @@ pub enum CalibrationFileError {
     UnsupportedVersion(f64),
     /// No `version`, but calibration keys: a file from before the schema.
     PreSchemaFile,
+    /// Not JSON but a sensor log: it starts with a `#` comment or the log's
+    /// `t_s,` header (a log given where the calibration goes).
+    SensorLog,
 }
 
 impl fmt::Display for CalibrationFileError {
@@ -216,6 +219,9 @@ impl fmt::Display for CalibrationFileError {
         match self {
             E::Syntax { at, expected } => write!(f, "not valid JSON at byte {at}: {expected}"),
             E::NotAnObject => f.write_str("expected one JSON object `{...}` of calibration keys"),
+            E::SensorLog => f.write_str(
+                "this is a sensor log (CSV), not a calibration file: that is the JSON `crane-sim calibrate` writes (docs/calibration.md)",
+            ),
             E::MissingKey(k) => write!(f, "key `{k}` is missing (every key is required)"),
             E::UnknownKey(k) => write!(f, "key `{k}` is not in the calibration schema"),
             E::NotInVersion { key, version } => write!(
@@ -249,7 +255,19 @@ impl fmt::Display for CalibrationFileError {
 /// Reads a calibration file (the bytes of `CAL.json`) against the schema
 /// (version 3; version 2 read without a lag, version 1 also as b = 0).
 pub fn parse_calibration<T: Real>(text: &[u8]) -> Result<Calibration<T>, CalibrationFileError> {
-    read_object(text).map(|(v, keys)| calibration_from_values(&v, keys))
+    read_object(text).map(|(v, keys)| calibration_from_values(&v, keys)).map_err(|e| match e {
+        CalibrationFileError::Syntax { at: 0, .. } if looks_like_log(text) => CalibrationFileError::SensorLog,
+        e => e,
+    })
+}
+
+/// Whether `text` starts (after a byte-order mark and blanks) like a sensor
+/// log: a `#` comment or the `t_s,` header.
+fn looks_like_log(text: &[u8]) -> bool {
+    let text = text.strip_prefix("\u{feff}".as_bytes()).unwrap_or(text);
+    let start = text.iter().position(|b| !b.is_ascii_whitespace()).unwrap_or(text.len());
+    let rest = text.get(start..).unwrap_or(&[]);
+    rest.starts_with(b"#") || rest.starts_with(b"t_s,")
 }
 
 /// The number of keys of a schema version, if the reader knows it.
@@ -690,6 +708,8 @@ pub mod hostile {
             ("array".into(), "[1,2,3]".into(), "one JSON object"),
             ("empty file".into(), "".into(), "empty file"),
             ("not JSON".into(), "friction_up_n = 3".into(), "not valid JSON"),
+            ("a sensor log".into(), "# crane-sim synth\nt_s,p1_bar,p2_bar,boom_angle_deg\n0,1,2,3\n".into(), "this is a sensor log (CSV)"),
+            ("a log without comments".into(), "t_s,p1_bar,p2_bar,boom_angle_deg\n0,1,2,3\n".into(), "this is a sensor log (CSV)"),
             ("trailing garbage".into(), format!("{GOOD} x"), "not valid JSON"),
             (
                 "unknown key".into(),

@@ -141,6 +141,9 @@ pub enum LogErrorKind {
     /// A data row whose time is the word `t_s`: a second header, as where
     /// two logs were joined into one file.
     SecondHeader,
+    /// The first line that is not a comment opens a JSON object or array:
+    /// a calibration file given where the log goes.
+    Json,
     /// This field is not a number.
     NotANumber(&'static str),
     /// The time is not finite.
@@ -196,6 +199,9 @@ impl fmt::Display for LogError {
             LogErrorKind::TooManyColumns => write!(f, "header has more than {MAX_COLUMNS} columns"),
             LogErrorKind::MissingField(c) => write!(f, "field `{c}` missing (row too short)"),
             LogErrorKind::TooManyFields => f.write_str("more fields than the header has columns"),
+            LogErrorKind::Json => f.write_str(
+                "this is JSON (a calibration file?), not a CSV sensor log (docs/log-format.md)",
+            ),
             LogErrorKind::SecondHeader => f.write_str(
                 "a second header: the file looks like two logs joined into one; replay each on its own",
             ),
@@ -504,6 +510,9 @@ fn unquote(field: &str) -> &str {
 }
 
 fn parse_header(text: &str) -> Result<heapless::Vec<Column, MAX_COLUMNS>, LogErrorKind> {
+    if text.starts_with('{') || text.starts_with('[') {
+        return Err(LogErrorKind::Json);
+    }
     // A spreadsheet saved in a locale with decimal commas separates with `;`
     // (or tabs): say so rather than that `t_s` is missing.
     if !text.contains(',') {
@@ -724,6 +733,9 @@ mod tests {
         assert!(e.to_string().contains("ends with a comma"), "{e}");
         let e = parse_all(&format!("{h}0,1,2,3,4, ,\n")).unwrap_err();
         assert_eq!(e.kind, LogErrorKind::TrailingComma);
+        // A calibration file given as the log.
+        let e = parse_all("{\"version\": 3,\n\"friction_up_n\": 1}\n").unwrap_err();
+        assert_eq!((e.line, e.kind), (1, LogErrorKind::Json));
         // Two logs joined: the second one's comment is skipped, its header
         // is named as what it is.
         let e = parse_all(&format!("{h}0,1,2,3,4\n# next log\n{h}0,1,2,3,4\n")).unwrap_err();
