@@ -146,6 +146,23 @@ fn a_fault_at_the_start_of_a_raise_is_bridged_without_an_early_alarm() {
     assert_none_missed_early_or_false(&only("3", &["6036"]));
 }
 
+/// #1724 of the campaign with `--seed 8` (a lift-off of 3.3 t at 80.8°, then
+/// a lowering to 8.2° in 9 s on a 4.2 m held rope) and #6948 of `--seed 10`
+/// (82.6° → 35.6° in 11 s on a 3–4 m rope). The 3.75 m rope's average, the
+/// bank's weighing, was dropped while that rope could not weigh; when it
+/// could again the average restarted at its W_k of that instant, 1.09 × the
+/// load, above every other average, and the weighing jumped with it:
+/// OVERLOAD at true u 0.8997 and 0.898 (early). A rope that was the weighing
+/// now restarts at the weighing: #1724 is not cut (its true u peaks at
+/// 0.967), #6948 is cut at 0.972.
+#[test]
+fn the_rope_that_was_the_weighing_restarts_at_it_in_a_fast_lowering() {
+    let runs = only("8", &["1724"]);
+    assert_none_missed_early_or_false(&runs);
+    assert_eq!(runs[0]["overload_onsets"], 0, "{}", runs[0]);
+    assert_none_missed_early_or_false(&only("10", &["6948"]));
+}
+
 fn assert_none_missed_early_or_false(runs: &[serde_json::Value]) {
     for v in runs {
         assert_eq!(v["missed"], false, "#{} missed: {v}", v["index"]);

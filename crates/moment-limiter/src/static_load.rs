@@ -88,7 +88,17 @@
 //!   becomes possible as the tip rises has not followed the true swing, and
 //!   its W_k of that instant (0.71 of the load with a 3 m rope at 55°) is no
 //!   weighing; in the min it cannot raise W_slow above the ropes already
-//!   weighing. At rest a hypothesis that cannot weigh keeps its average and
+//!   weighing. Unless it was the lowest of them: a rope whose average was
+//!   W_slow when it stopped weighing in motion starts again at W_slow. With
+//!   the other averages higher, its start is the new W_slow: lowering 80.8° →
+//!   8.2° in 9 s on a 4.2 m rope, the 3.75 m rope restarted at its W_k of
+//!   1.09 × the load, W_slow jumped from 0.98 to 1.09 in one cycle, and the
+//!   limiter cut at true u 0.900 (campaign seed 8 #1724; now no cut, the
+//!   true u peaks at 0.967; seed 10 #6948 from 0.898 to 0.972). Capping every
+//!   restart at 2 % or 5 % above W_slow instead lowered the thesis world's
+//!   10 s lowerings (est/true down to 0.985, or a cut after u = 1 where it
+//!   came 0.16 s before); this touches only the rope that was the weighing,
+//!   and they do not change. At rest a hypothesis that cannot weigh keeps its average and
 //!   votes with it (the load swings on; its weighing from the move is the
 //!   best it has).
 //!
@@ -593,6 +603,10 @@ struct Hypothesis<T> {
     slow_kg: Option<[T; SLOW_STAGES]>,
     /// Its consistency with a constant load ([`crate::load_jump`]).
     jump: Consistency<T>,
+    /// Its average was the bank's weighing W_slow (the lowest) when it
+    /// stopped weighing in motion: it starts again at W_slow (see the
+    /// module doc).
+    was_lowest: bool,
 }
 
 /// The bank of rope hypotheses (see the module doc).
@@ -682,7 +696,7 @@ impl<T: Real> StaticLoadBank<T> {
     pub fn new(geometry: SwingGeometry<T>) -> Self {
         let make = |k: usize| {
             let held = k.checked_sub(1);
-            Hypothesis { held, slow_kg: None, jump: Consistency::new() }
+            Hypothesis { held, slow_kg: None, jump: Consistency::new(), was_lowest: false }
         };
         Self {
             geometry,
@@ -1051,6 +1065,8 @@ impl<T: Real> StaticLoadBank<T> {
                 // Cannot weigh now. In motion its average starts afresh when
                 // it can (the rope moved on meanwhile); at rest it is kept.
                 if !still {
+                    let last = h.slow_kg.and_then(|st| st.last().copied());
+                    h.was_lowest |= matches!((last, prev_slow), (Some(a), Some(p)) if a <= p);
                     h.slow_kg = None;
                     h.jump = Consistency::new();
                 }
@@ -1069,7 +1085,12 @@ impl<T: Real> StaticLoadBank<T> {
             // too. (Started at the bank's weighing instead, the short ropes
             // that become usable lowering from 80° averaged their low
             // readings down to 0.92 of the load.)
-            let start = prev_slow.map_or(w, |p| p.max(w));
+            // The rope whose average was the weighing when it stopped
+            // weighing starts again at the weighing, not at its W_k of one
+            // instant: it was the lowest, and with the others higher its
+            // start would be W_slow at once (see the module doc).
+            let start = prev_slow.map_or(w, |p| if h.was_lowest && !still { p } else { p.max(w) });
+            h.was_lowest = false;
             let mut stages = h.slow_kg.unwrap_or([start; SLOW_STAGES]);
             if h.jump.fast_kg().is_none() {
                 // Its first ratio against the average it starts, or takes
