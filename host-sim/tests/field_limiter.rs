@@ -960,10 +960,10 @@ fn power_up_with_the_load_swinging(precision: Precision) -> Vec<(String, [f64; 2
                 let weighing = |q: &&Point| q.state != LimiterState::Fault;
                 let high = pts.iter().filter(weighing).map(|q| q.ratio).fold(0.0, f64::max);
                 let time_in = |state| pts.iter().filter(|q| q.state == state).count() as f64 / rate_hz();
-                let overload_s = [time_in(LimiterState::Overload), time_in(LimiterState::Fault)];
+                let times_s = [time_in(LimiterState::Overload), time_in(LimiterState::Fault)];
                 let late: Vec<f64> = pts.iter().filter(weighing).filter(|q| q.t >= on + SWING_FOUND_S).map(|q| q.ratio).collect();
                 let name = format!("{from:.0}->{to:.0} {rope:?}, switched on {after_stop} s after the stop");
-                cases.push((name, overload_s, high, late));
+                cases.push((name, times_s, high, late));
             }
         }
     }

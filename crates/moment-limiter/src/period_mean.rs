@@ -626,13 +626,14 @@ impl<T: Real> PeriodMean<T> {
         // period leaves its means near a crest of the swing close (a 3.5 s
         // span passed for a 4.9 s swing), but not the force one span apart
         // (it differs by 2·A·sin(π·|P − span|/P)).
-        let mut swing = T::lit(0.0);
-        let found = s.best.filter(|&(spread, p, m)| {
-            swing = self.force_swing_n(s.end, p + p / 3).unwrap_or(T::lit(0.0));
+        // `found`: (spread, span, mean, the force's swing over the data compared).
+        let found = s.best.and_then(|(spread, p, m)| {
+            let swing = self.force_swing_n(s.end, p + p / 3).unwrap_or(T::lit(0.0));
             let part = (m - unloaded_n).abs();
             let allowed = (T::lit(SPREAD) * part).min(T::lit(SWING_SPREAD) * swing);
             let repeat = T::lit(REPEAT_SWING) * swing + T::lit(CHANGE_FLOOR_N);
-            spread <= allowed + T::lit(SPREAD_FLOOR_N) && self.repeats(s.end, p, p / 30, repeat)
+            let flat = spread <= allowed + T::lit(SPREAD_FLOOR_N) && self.repeats(s.end, p, p / 30, repeat);
+            flat.then_some((spread, p, m, swing))
         });
         // The same period (within 5 % of the one the run of searches began
         // with, or a multiple of it: twice the period is as flat) search
@@ -648,8 +649,9 @@ impl<T: Real> PeriodMean<T> {
         };
         self.searched_to = s.end;
         self.period = found.map(|b| b.1);
-        self.mean_n = found.filter(|_| self.confirmed >= CONFIRM_BINS).map(|b| b.2);
-        self.swing_n = self.mean_n.map(|_| swing);
+        let read = found.filter(|_| self.confirmed >= CONFIRM_BINS);
+        self.mean_n = read.map(|b| b.2);
+        self.swing_n = read.map(|b| b.3);
     }
 
     /// Whether the force the mean was found on swings by more than the

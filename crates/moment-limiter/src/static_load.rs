@@ -98,8 +98,8 @@
 //!   restart at 2 % or 5 % above W_slow instead lowered the thesis world's
 //!   10 s lowerings (est/true down to 0.985, or a cut after u = 1 where it
 //!   came 0.16 s before); this touches only the rope that was the weighing,
-//!   and they do not change. At rest a hypothesis that cannot weigh keeps its average and
-//!   votes with it (the load swings on; its weighing from the move is the
+//!   and they do not change. At rest a hypothesis that cannot weigh keeps
+//!   its average and votes with it (the load swings on; its weighing from the move is the
 //!   best it has).
 //!
 //! A held rope longer than the tip is high (the load would be below ground)

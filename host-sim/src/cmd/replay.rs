@@ -243,8 +243,8 @@ struct Spacing {
     last_us: Option<i64>,
     /// Shortest and longest step (µs) of those within the gap bound.
     range_us: Option<(i64, i64)>,
-    /// Steps forward, and the shortest of those beyond the gap bound (µs).
-    forward: u64,
+    /// Steps beyond the gap bound, and the shortest of them (µs).
+    gaps: u64,
     shortest_gap_us: Option<i64>,
 }
 
@@ -262,12 +262,10 @@ impl Spacing {
     fn add(&mut self, t_us: i64) {
         if let Some(last) = self.last_us.replace(t_us) {
             let step = t_us - last;
-            if step > 0 {
-                self.forward += 1;
-            }
             if step > 0 && step <= Self::GAP_BOUND_US {
                 self.range_us = Some(self.range_us.map_or((step, step), |(lo, hi)| (lo.min(step), hi.max(step))));
             } else if step > Self::GAP_BOUND_US {
+                self.gaps += 1;
                 self.shortest_gap_us = Some(self.shortest_gap_us.map_or(step, |s| s.min(step)));
             }
         }
@@ -278,7 +276,8 @@ impl Spacing {
     /// 20 ms read as 20 s) replays as one FAULT from its second sample on.
     fn milliseconds_hint(&self) -> Option<String> {
         let shortest = self.shortest_gap_us?;
-        (self.range_us.is_none() && self.forward >= 2).then(|| {
+        // No step within the bound: every step forward was a gap.
+        (self.range_us.is_none() && self.gaps >= 2).then(|| {
             format!(
                 "every step between the log's samples is a gap the limiter faults on (the shortest {:.3} s; more \
                  than {:.3} s is a gap). If t_s holds milliseconds, divide it by 1000 (docs/log-format.md)",
