@@ -523,20 +523,34 @@ fn no_false_overload_at_85_percent_over_other_ranges() {
     assert!(failures.is_empty(), "{failures:#?}");
 }
 
-/// KNOWN GAP, measured (f64): 85 % of the load rated at 50° raised to 85°
-/// in 10 s on the 3 m held rope. Stopped at 85° (tan θ = 11.4) the load
-/// swings ±24°, its pull on the cylinder runs from −4 to +6 times its
-/// weight (the simulator's rigid rope; a real one goes slack, and the load
-/// would strike a boom 5° off vertical), p1 leaves its range (FAULT for
-/// 1.5 s), and the chain restarted after the gap reads the swing as load:
-/// OVERLOAD 2.4–2.6 s after the stop at a true u of 0.62 (estimated up to
-/// 1.40), in 4 of the 64 cases of 50°–85°; the 30 s raises and every other
-/// rope are not cut. The limiter cuts throughout (FAULT, then OVERLOAD).
-#[test]
-#[ignore = "KNOWN GAP: raised 50 -> 85 deg in 10 s on a 3 m rope, the swing (+-24 deg) takes p1 out of range and then reads as load: OVERLOAD at true u 0.62"]
-fn a_raise_to_85_degrees_on_a_3_m_rope_known_gap() {
-    let (failures, _) = no_false_overload_over(Precision::F64, &[(50.0, 85.0)]);
+/// 85 % of the load rated at 50° raised to 85° in 10 s and 30 s, every rope,
+/// both friction laws (f64 and f32): no OVERLOAD. Stopped at 85° (tan θ =
+/// 11.4) on the 3 m held rope the load swings ±24°, its pull on the cylinder
+/// runs from −4 to +6 times its weight (the simulator's rigid rope; a real
+/// one goes slack, and the load would strike a boom 5° off vertical), and p1
+/// leaves its range at the swing's crests (FAULT for 1.4 s). Before the
+/// angle's side of the signal chain went on through a pressure's fault
+/// (`moment_limiter::cycle`, "A pressure's fault"), the rope bank's
+/// pendulums stood still through that gap, and after it every rope read the
+/// swing as load: OVERLOAD 2.4–2.6 s after the stop at a true u of 0.62
+/// (estimated up to 1.40) in 4 of the 64 cases. Now they swing on with the
+/// boom, and the force, restarted after the gap, is no reading until its
+/// filters have settled (they would set it beside pendulums of another
+/// instant: −1.1 to 1.6 × the load in the first 0.6 s).
+fn a_raise_to_85_degrees_on_a_3_m_rope(precision: Precision) {
+    let (failures, worst) = no_false_overload_over(precision, &[(50.0, 85.0)]);
+    println!("{precision:?}: highest estimated u {worst:.3}");
     assert!(failures.is_empty(), "{failures:#?}");
+}
+
+#[test]
+fn a_raise_to_85_degrees_on_a_3_m_rope_f64() {
+    a_raise_to_85_degrees_on_a_3_m_rope(Precision::F64);
+}
+
+#[test]
+fn a_raise_to_85_degrees_on_a_3_m_rope_f32() {
+    a_raise_to_85_degrees_on_a_3_m_rope(Precision::F32);
 }
 
 #[test]
@@ -676,17 +690,77 @@ fn a_lowering_right_after_a_lift_off_behind_a_noisy_angle_sensor_f32() {
     a_lowering_right_after_a_lift_off_behind_a_noisy_angle_sensor(Precision::F32);
 }
 
-/// KNOWN GAP, measured (f64): lowered from 85° to 10° in 10 s (7.5 °/s,
-/// nearly twice the thesis's fastest move, from an angle where tan θ =
-/// 11.4), the 3 m and the 10 m held ropes swing so far in the start ramp
-/// that 11 of 32 lowerings are cut early, from true u 0.61 (toward safety;
-/// none late; the paid-out rope is cut at 1.018–1.025, the 17 m rope at
-/// 0.96–0.98).
-#[test]
-#[ignore = "KNOWN GAP: lowered 85 -> 10 deg in 10 s on a 3 m or 10 m held rope, 11 of 32 are cut early (from true u 0.61)"]
-fn a_lowering_from_85_degrees_at_7_5_degrees_per_second_known_gap() {
-    let failures = lowerings(Precision::F64, &[(85.0, 10.0, 10.0, 1.0)]);
+/// Lowered from 85° to 10° in 10 s (7.5 °/s, nearly twice the thesis's
+/// fastest move, from an angle where tan θ = 11.4), every rope, both
+/// friction laws, both ramp shapes, the loads rated at 45° and 30° (f64 and
+/// f32): cut between true u 1/1.1 and 1.05. The 3 m and the 10 m held ropes
+/// swing so far in the start ramp (±30°) that p1 leaves its range for up to
+/// 3.3 s. Before the angle's side of the signal chain went on through a
+/// pressure's fault (`moment_limiter::cycle`, "A pressure's fault"), the rope
+/// bank's pendulums stood still through that gap, every rope read the swing
+/// as load after it (1.6 × the load), and 9 of the 32 lowerings were cut
+/// early, from true u 0.61 (11 of 32 before the rope that was the weighing
+/// restarted at it). Measured (f64): the held ropes are cut at true u
+/// 0.961–1.011, the paid-out rope at 1.018–1.027.
+fn a_lowering_from_85_degrees_at_7_5_degrees_per_second(precision: Precision) {
+    let failures = lowerings(precision, &[(85.0, 10.0, 10.0, 1.0)]);
     assert!(failures.is_empty(), "{} of 32: {failures:#?}", failures.len());
+}
+
+#[test]
+fn a_lowering_from_85_degrees_at_7_5_degrees_per_second_f64() {
+    a_lowering_from_85_degrees_at_7_5_degrees_per_second(Precision::F64);
+}
+
+#[test]
+fn a_lowering_from_85_degrees_at_7_5_degrees_per_second_f32() {
+    a_lowering_from_85_degrees_at_7_5_degrees_per_second(Precision::F32);
+}
+
+/// 85 % of the load rated at 60° hanging still at 60°, every rope, both
+/// friction laws (f64): p1's loop breaks for 1.5 s, and 0.5 s into that
+/// gap the angle reads 20° high for 0.1 s (a loose connector). The angle's
+/// side of the chain goes on through a pressure's fault only on angles a
+/// boom can follow (the monitor's 60 °/s): the glitch ends that for the
+/// gap, which then ends as any gap does. Asserted: from 3 s after the gap
+/// no OVERLOAD, and the estimate within 1.00–1.10 of the load for the 10 s
+/// after: measured 1.044–1.051. Taken as the boom's, the glitch swung
+/// every pendulum and the boom seemed to have luffed: with the check
+/// removed, all 8 read 0.908–0.914 of the load 3 s after the gap (low: the
+/// direction that misses an overload).
+#[test]
+fn an_angle_glitch_in_a_pressure_fault_swings_no_pendulum() {
+    let mut failures = Vec::new();
+    let (mut lo, mut hi) = (f64::INFINITY, 0.0f64);
+    for rope in ROPES {
+        for seals in SEALS {
+            let w = 0.85 * rated_kg(60f64.to_radians());
+            let mut p = Program::new(60.0, w, rope_choice(rope, 60.0)).unwrap();
+            p.push(Segment::Hold { duration_s: 20.0 }).unwrap();
+            let mut rows = program_rows(&p, seals, 3);
+            for r in rows.iter_mut().filter(|r| (5.0..6.5).contains(&r.t_s)) {
+                r.p1_bar = moment_limiter::units::PRESSURE_MAX_BAR + 20.0;
+                if (5.5..5.6).contains(&r.t_s) {
+                    r.boom_angle_deg += 20.0;
+                }
+            }
+            let pts = replay_rows(&rows, seals, Precision::F64);
+            let after: Vec<&Point> = pts.iter().filter(|q| q.t >= 9.5 && q.t < 19.5).collect();
+            let name = format!("{rope:?} {seals:?}");
+            if let Some(q) = after.iter().find(|q| q.state == LimiterState::Overload) {
+                failures.push(format!("{name}: OVERLOAD at {:.2} s", q.t));
+            }
+            for q in &after {
+                lo = lo.min(q.ratio);
+                hi = hi.max(q.ratio);
+            }
+            if let Some(q) = after.iter().find(|q| !(1.0..=1.10).contains(&q.ratio)) {
+                failures.push(format!("{name}: estimate {:.3} of the load at {:.2} s", q.ratio, q.t));
+            }
+        }
+    }
+    println!("estimate/true from 3 s after the gap: {lo:.3}–{hi:.3}");
+    assert!(failures.is_empty(), "{failures:#?}");
 }
 
 #[test]
@@ -2602,9 +2676,9 @@ fn trace() {
     let spec = std::env::var("FIELD_TRACE").unwrap_or_else(|_| "0 40 80 10 0.85".into());
     let v: Vec<f64> = spec.split_whitespace().map(|x| x.parse().unwrap()).collect();
     let rope = if v[0] < 0.0 { Rope::Thesis } else { Rope::Held(v[0]) };
-    let sc = Scenario { load_kg: v[4] * rated_kg(40f64.to_radians()), from_deg: v[1], to_deg: v[2], duration_s: v[3], ramp_s: 1.0, shape: RampShape::Cycloidal, rope, seals: Seals::Constant, lift_off_s: None, seed: 7 };
+    let sc = Scenario { load_kg: if v[4] > 10.0 { v[4] } else { v[4] * rated_kg(40f64.to_radians()) }, from_deg: v[1], to_deg: v[2], duration_s: v[3], ramp_s: 1.0, shape: RampShape::Cycloidal, rope, seals: if v.len() > 5 && v[5] > 0.0 { Seals::Seal } else { Seals::Constant }, lift_off_s: None, seed: 7 };
     let rows = sc.rows();
-    let cal = calibration_with(model(), Seals::Constant);
+    let cal = calibration_with(model(), sc.seals);
     let config = LimiterConfig { calibration: cal, ..LimiterConfig::standard() };
     let mut lim = Limiter::new(*model(), config).unwrap();
     for (k, r) in rows.iter().enumerate() {

@@ -672,6 +672,9 @@ pub struct StaticLoadBank<T> {
     /// filters' start-up, [`crate::load_estimate::CREEP_AFTER_START_S`]
     /// (see the module doc, "Power-up").
     started_s: T,
+    /// At the last [`update`](Self::update) every possible rope weighed and
+    /// their factors agreed within [`AGREEMENT`]: no swing predicted.
+    factors_agree: bool,
 }
 
 /// The bank's answer of one cycle.
@@ -723,6 +726,7 @@ impl<T: Real> StaticLoadBank<T> {
             period_mean: PeriodMean::new(),
             advanced_s: T::lit(0.0),
             started_s: T::lit(0.0),
+            factors_agree: true,
         }
     }
 
@@ -773,6 +777,12 @@ impl<T: Real> StaticLoadBank<T> {
         self.moved = false;
         self.ropes.still();
         self.paid_out.still();
+    }
+
+    /// The ropes disagreed at the last update: they predict a swing, whose
+    /// factor needs the force and the pendulums at one instant.
+    pub fn swing_predicted(&self) -> bool {
+        !self.factors_agree
     }
 
     /// Forgets swing and averages (after a sensor fault broke the angle).
@@ -1047,7 +1057,8 @@ impl<T: Real> StaticLoadBank<T> {
         let within = |spread: f64| {
             all_weigh && matches!((f_lo, f_hi), (Some(lo), Some(hi)) if hi <= lo * T::lit(1.0 + spread))
         };
-        let agree = self.settled && (!self.moved || self.still && within(AGREEMENT));
+        self.factors_agree = within(AGREEMENT);
+        let agree = self.settled && (!self.moved || self.still && self.factors_agree);
         let mut fast: Option<T> = None;
         let still = self.still;
         // In motion the averages move only while every possible rope weighs:

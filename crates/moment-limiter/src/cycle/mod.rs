@@ -75,6 +75,28 @@ pub const SETTLE_S: f64 = 2.0;
 /// lasts 0.2–0.5 s. Over a longer gap the filters restart settled on the
 /// next good sample and the rope bank's averages start afresh (the load may
 /// have changed).
+///
+/// **A pressure's fault: the angle goes on.** When only a pressure is bad
+/// (out of range, stuck, or changing faster than a pressure can) and the
+/// angle reading is good, the angle's side of the chain goes on through the gap: its filter,
+/// rate, acceleration and direction, and the rope bank's pendulums, driven
+/// by the boom as at any cycle. The swing a load has depends on the boom's
+/// motion alone, and a short rope at a steep boom is exactly where the
+/// swing takes p1 past its range: lowered from 85° in 10 s on a 3 m rope,
+/// p1 was out of range for 3.3 s of the start; with the pendulums standing
+/// through the gap, every rope read the ±30° swing after it as 1.6 × the
+/// load, and 9 of 32 such lowerings were cut early, from true u 0.61; raised
+/// to 85°, 4 of 64 were a false OVERLOAD at true u 0.62. Only the force's
+/// side then waits: over a short gap it is bridged on the straight line
+/// alone, over a longer one its filters restart, and while the bank
+/// predicts a swing the force is no reading for [`SETTLE_S`] even with the
+/// boom still (restarted without its filters' delay it stands for another
+/// instant than the pendulums: −1.1 to 1.6 × the load in the first 0.6 s
+/// at 85°). The angle goes on only while every bad cycle of the gap had an
+/// angle a boom can follow (within the monitor's rate limit of the last
+/// one): a glitch, or an angle's own fault, ends it for that gap, which
+/// then ends as before, or, if the angle went on through part of it, with
+/// both sides restarted (they no longer share one time).
 pub const PAUSE_GAP_S: f64 = 1.0;
 
 /// Most steps the signal chain takes through a short gap (see
@@ -147,6 +169,16 @@ pub struct Limiter<T, M> {
     /// The last good sample's piston force (N) and boom angle (°, offset
     /// removed): where a short gap is bridged from.
     last_good: Option<(T, T)>,
+    /// Every bad cycle of the present gap had a good angle, on which the
+    /// angle's side of the chain went on (see
+    /// `Limiter::interrupt_signal_chain_keeping`).
+    angle_kept: bool,
+    /// Time since the angle's side last went on through the present gap (s);
+    /// `None` while it has not (see `angle_kept`).
+    angle_gap_s: Option<T>,
+    /// The last restart of the chain restarted the angle filter too (not
+    /// only the force's): its start-up is no acceleration of the boom.
+    angle_restarted: bool,
     direction: DirectionDetector<T>,
     machine: StateMachine<T>,
     log: EventLog<T, EVENT_LOG_LEN>,
@@ -182,6 +214,9 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             gap_s: T::lit(0.0),
             interrupted: false,
             last_good: None,
+            angle_kept: false,
+            angle_gap_s: None,
+            angle_restarted: false,
             direction: DirectionDetector::new(config.direction),
             machine: StateMachine::new(config.thresholds),
             log: EventLog::new(),
@@ -258,13 +293,13 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     #[inline(never)]
     pub fn step_frame(&mut self, frame: &Frame<T>) -> StepReport<T> {
         let fault = |channel: Channel| move |kind: FaultKind| SensorFault { channel, kind };
-        let readings = PressureBar::new(frame.p1_bar)
-            .map_err(fault(Channel::PistonSidePressure))
-            .and_then(|p1| {
-                let p2 = PressureBar::new(frame.p2_bar).map_err(fault(Channel::RodSidePressure))?;
-                let a = BoomAngle::new(frame.boom_angle_deg).map_err(fault(Channel::BoomAngle))?;
-                Ok((p1, p2, a))
-            });
+        let p1 = PressureBar::new(frame.p1_bar).map_err(fault(Channel::PistonSidePressure));
+        let p2 = PressureBar::new(frame.p2_bar).map_err(fault(Channel::RodSidePressure));
+        let a = BoomAngle::new(frame.boom_angle_deg).map_err(fault(Channel::BoomAngle));
+        let readings = match (p1, p2, a) {
+            (Ok(p1), Ok(p2), Ok(a)) => Ok((p1, p2, a)),
+            (Err(f), _, a) | (_, Err(f), a) | (_, _, a @ Err(f)) => Err((f, a.ok())),
+        };
         self.step_readings(frame.t, readings)
     }
 
@@ -272,7 +307,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     fn step_readings(
         &mut self,
         t: Ticks,
-        readings: Result<Readings<T>, SensorFault>,
+        readings: Result<Readings<T>, (SensorFault, Option<BoomAngle<T>>)>,
     ) -> StepReport<T> {
         // Clock: the step comes from the integer difference; a stalled,
         // jumping or backwards clock is a fault (the step is then 0).
@@ -294,8 +329,8 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
                 self.interrupt_signal_chain();
                 Some(f)
             }
-            (None, Err(sensor)) => {
-                self.interrupt_signal_chain();
+            (None, Err((sensor, angle))) => {
+                self.interrupt_signal_chain_keeping(angle, dt_s);
                 Some(Fault::Sensor(sensor))
             }
             (None, Ok((p1, p2, angle))) => {
@@ -304,7 +339,8 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
                     .check([p1.bar(), p2.bar(), angle.degrees()], dt_s)
                 {
                     Err(sensor) => {
-                        self.interrupt_signal_chain();
+                        let angle = (sensor.channel != Channel::BoomAngle).then_some(angle);
+                        self.interrupt_signal_chain_keeping(angle, dt_s);
                         Some(Fault::Sensor(sensor))
                     }
                     Ok(()) => {
@@ -401,14 +437,20 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     }
 
     /// `true` while the signal chain restarted less than [`SETTLE_S`] ago
-    /// and the boom moves (a still boom's start is its true history).
+    /// and the boom moves (a still boom's start is its true history), or
+    /// only the force's side restarted and the rope bank predicts a swing:
+    /// its pendulums went on swinging with the boom through the gap, and a
+    /// force restarted without its filter's delay does not stand for their
+    /// instant (stopped at 85° from a raise on a 3 m rope, the first 0.6 s
+    /// read from −1.1 to 1.6 × the load).
     fn settling(&mut self, m: &Measurement<T>, dt_s: T) -> bool {
         let Some(t) = self.since_restart_s else {
             return false;
         };
         let t = t + dt_s;
         self.since_restart_s = (t < T::lit(SETTLE_S)).then_some(t);
-        self.since_restart_s.is_some() && m.direction != Direction::Still
+        let swinging = !self.angle_restarted && self.bank.as_ref().is_some_and(|b| b.swing_predicted());
+        self.since_restart_s.is_some() && (m.direction != Direction::Still || swinging)
     }
 
     /// Stages 3–4: load, rating, utilization, from one query of the model.

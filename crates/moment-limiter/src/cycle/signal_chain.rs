@@ -35,7 +35,9 @@ fn extrapolate<T: Real>(angle: T, rate: T, accel: T, horizon_s: T) -> (T, T) {
 }
 
 impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
-    pub(super) fn read_counts<S: SensorInputs>(&self, inputs: &mut S) -> Result<Readings<T>, SensorFault> {
+    /// The three readings of one cycle, or the first channel's fault in
+    /// channel order and the angle when its own reading is good.
+    pub(super) fn read_counts<S: SensorInputs>(&self, inputs: &mut S) -> Result<Readings<T>, (SensorFault, Option<BoomAngle<T>>)> {
         let conv = &self.config.conversion;
         let fault = |channel: Channel| move |kind: FaultKind| SensorFault { channel, kind };
         let read = |inputs: &mut S, channel: Channel| {
@@ -44,23 +46,66 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
                 kind: FaultKind::Input(e),
             })
         };
-        let c1 = read(inputs, Channel::PistonSidePressure)?;
-        let p1 = conv
-            .pressure(&conv.p1, c1)
-            .map_err(fault(Channel::PistonSidePressure))?;
-        let c2 = read(inputs, Channel::RodSidePressure)?;
-        let p2 = conv
-            .pressure(&conv.p2, c2)
-            .map_err(fault(Channel::RodSidePressure))?;
-        let ca = read(inputs, Channel::BoomAngle)?;
-        let a = conv.boom_angle(ca).map_err(fault(Channel::BoomAngle))?;
-        Ok((p1, p2, a))
+        // Every channel is read each cycle: the angle goes on through a
+        // pressure's fault (see `interrupt_signal_chain_keeping`).
+        let p1 = read(inputs, Channel::PistonSidePressure).and_then(|c| {
+            conv.pressure(&conv.p1, c)
+                .map_err(fault(Channel::PistonSidePressure))
+        });
+        let p2 = read(inputs, Channel::RodSidePressure).and_then(|c| {
+            conv.pressure(&conv.p2, c)
+                .map_err(fault(Channel::RodSidePressure))
+        });
+        let a = read(inputs, Channel::BoomAngle)
+            .and_then(|c| conv.boom_angle(c).map_err(fault(Channel::BoomAngle)));
+        match (p1, p2, a) {
+            (Ok(p1), Ok(p2), Ok(a)) => Ok((p1, p2, a)),
+            (Err(f), _, a) | (_, Err(f), a) | (_, _, a @ Err(f)) => Err((f, a.ok())),
+        }
     }
 
     /// A bad cycle: no faulty value ever reaches the filters. The chain
     /// pauses; at the next good sample it resumes, or restarts after a long
     /// gap (see [`PAUSE_GAP_S`]).
     pub(super) fn interrupt_signal_chain(&mut self) {
+        self.interrupt_signal_chain_keeping(None, T::lit(0.0));
+    }
+
+    /// A bad cycle whose angle reading `angle` is good (a pressure's fault):
+    /// the angle's side of the chain goes on `dt_s` after the last cycle, so
+    /// the rope bank's pendulums swing with the boom through the gap (see
+    /// [`PAUSE_GAP_S`]); the force's side pauses as for any bad cycle. Only
+    /// while every bad cycle of the gap had its angle: one without breaks it,
+    /// and the gap ends as any other.
+    pub(super) fn interrupt_signal_chain_keeping(&mut self, angle: Option<BoomAngle<T>>, dt_s: T) {
+        if !self.interrupted {
+            // A new gap: the angle's side can go on only from a good sample.
+            self.angle_kept = self.last_good.is_some();
+            self.angle_gap_s = None;
+        }
+        let angle_deg = angle.map(|a| a.degrees() - self.config.calibration.angle_offset_deg);
+        // The rate check the monitor cannot make on a gap's readings: a
+        // jump no boom makes would kick every pendulum.
+        let max_step = self.config.plausibility.angle.max_rate_per_s * dt_s.max(self.config.clock.period_s());
+        let credible = match (angle_deg, self.last_good) {
+            (Some(a), Some((_, last))) => (a - last).abs() <= max_step,
+            _ => false,
+        };
+        match angle_deg {
+            Some(angle_deg) if self.angle_kept && credible && dt_s > T::lit(0.0) => {
+                let held_force_n = self.force_filter.output().unwrap_or(T::lit(0.0));
+                let step = self.angle_step(angle_deg, dt_s, held_force_n);
+                self.advance_bank(step, dt_s);
+                if let Some((force, _)) = self.last_good {
+                    self.last_good = Some((force, angle_deg));
+                }
+                self.angle_gap_s = Some(T::lit(0.0));
+            }
+            _ => {
+                self.angle_kept = false;
+                self.angle_gap_s = self.angle_gap_s.map(|g| g + dt_s);
+            }
+        }
         self.negative_load.reset();
         self.monitor.break_rate_history();
         self.interrupted = true;
@@ -69,18 +114,27 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     /// After a gap longer than [`PAUSE_GAP_S`] the filters restart settled
     /// on the next good sample, and the bank's averages start afresh.
     fn restart_filters(&mut self) {
-        self.since_restart_s = Some(T::lit(0.0));
-        if let Some(l) = self.force_lag.as_mut() {
-            l.reset();
-        }
-        self.force_filter.reset();
-        self.force_still_filter.reset();
+        self.restart_force_filters();
+        self.angle_restarted = true;
         self.angle_filter.reset();
         self.direction.filters_restarted();
         self.previous_angle_deg = None;
         self.previous_rate_deg_s = None;
         self.previous_dt_s = T::lit(0.0);
         self.moving_for_s = T::lit(0.0);
+    }
+
+    /// The force's side of [`Self::restart_filters`] alone, after a long gap
+    /// whose angle the chain kept: the angle filter, the rate and the
+    /// pendulums are the boom's own.
+    fn restart_force_filters(&mut self) {
+        self.since_restart_s = Some(T::lit(0.0));
+        self.angle_restarted = false;
+        if let Some(l) = self.force_lag.as_mut() {
+            l.reset();
+        }
+        self.force_filter.reset();
+        self.force_still_filter.reset();
     }
 
     /// Stage 2: force, filters, rate and direction.
@@ -105,10 +159,29 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         // rise was not, and the stop read 1.14 × the load (OVERLOAD at true
         // u 0.906 and 0.873 as the fault ended).
         let mut dt_s = dt_s;
+        // The step of the force's side when it differs (a gap whose angle
+        // the chain kept: only the force waited).
+        let mut force_dt_s = None;
         if core::mem::replace(&mut self.interrupted, false) {
             let gap_s = core::mem::replace(&mut self.gap_s, T::lit(0.0));
-            match self.last_good {
-                Some(from) if gap_s <= T::lit(PAUSE_GAP_S) => {
+            let kept = core::mem::replace(&mut self.angle_kept, false);
+            // The part of the gap the angle's side has not gone through yet:
+            // all of it, unless it went on for a while and then stopped.
+            let angle_gap_s = self.angle_gap_s.take();
+            match (self.last_good, angle_gap_s) {
+                (Some(from), _) if kept && gap_s <= T::lit(PAUSE_GAP_S) => {
+                    force_dt_s = Some(self.fill_force_gap(from.0, force, gap_s, dt_s));
+                }
+                _ if kept => self.restart_force_filters(),
+                (_, Some(angle_gap_s)) => {
+                    // The angle went on through part of the gap, then broke
+                    // (a glitch, or its own fault): the two sides no longer
+                    // share one time, and both start afresh; the swing goes
+                    // on over the part the pendulums have not seen.
+                    self.restart_filters();
+                    dt_s += angle_gap_s;
+                }
+                (Some(from), None) if gap_s <= T::lit(PAUSE_GAP_S) => {
                     dt_s = self.fill_gap(from, (force, angle_deg), gap_s, dt_s);
                 }
                 _ => {
@@ -120,7 +193,8 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             }
         }
         self.last_good = Some((force, angle_deg));
-        let filtered = self.filter_step(force, angle_deg, dt_s);
+        let (force_f, force_still_f) = self.force_step(force, force_dt_s.unwrap_or(dt_s));
+        let filtered = ChainStep { force_n: force_f, force_still_n: force_still_f, ..self.angle_step(angle_deg, dt_s, force_f) };
         let step = self.advance_bank(filtered, dt_s);
         let (angle_f, rate_f, accel_f) = (step.angle_deg, step.rate_deg_s, step.accel_deg_s2);
         // Time alignment (see the type's doc): the filtered force and the
@@ -173,7 +247,8 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             }
             t += h;
             let s = t / total;
-            let filtered = self.filter_step(from.0 + s * (to.0 - from.0), from.1 + s * (to.1 - from.1), h);
+            let (force_f, force_still_f) = self.force_step(from.0 + s * (to.0 - from.0), h);
+            let filtered = ChainStep { force_n: force_f, force_still_n: force_still_f, ..self.angle_step(from.1 + s * (to.1 - from.1), h, force_f) };
             // The swing too: taken over the gap in one step with the
             // acceleration at its end, a held load raised to 66° read 1.10 ×
             // (campaign seed 3, #6036).
@@ -182,11 +257,31 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         total - t
     }
 
-    /// One step of the chain on the piston force `force` (N, offsets
-    /// removed) and the boom angle `angle_deg` (°, offset removed), `dt_s`
-    /// after the previous: the sensor lag on the force, the filters, rate,
-    /// acceleration, direction and the seals' release.
-    fn filter_step(&mut self, force: T, angle_deg: T, dt_s: T) -> ChainStep<T> {
+    /// The force's sub-steps through a gap of `gap_s` whose angle the chain
+    /// kept, on the straight line from the last good force `from` to this
+    /// sample's `to` (N), as [`Self::fill_gap`] steps; returns the step
+    /// left for `to`.
+    fn fill_force_gap(&mut self, from: T, to: T, gap_s: T, dt_s: T) -> T {
+        let total = gap_s + dt_s;
+        if !(dt_s > T::lit(0.0) && total.is_finite()) {
+            return total;
+        }
+        let h = dt_s.max(total / T::lit(MAX_GAP_STEPS as f64));
+        let mut t = T::lit(0.0);
+        for _ in 1..MAX_GAP_STEPS {
+            if t + h * T::lit(1.5) > total {
+                break;
+            }
+            t += h;
+            self.force_step(from + t / total * (to - from), h);
+        }
+        total - t
+    }
+
+    /// The force's side of one step on the piston force `force` (N, offsets
+    /// removed), `dt_s` after its previous: the sensor lag and the filters.
+    /// Returns the filtered force through the lag and without it (N).
+    fn force_step(&mut self, force: T, dt_s: T) -> (T, T) {
         // Without the sensor's lag for a still boom (see crate::static_load).
         let force_still_f = self.force_still_filter.update(force, dt_s);
         // The force through the angle sensor's lag too: force, angle, rate
@@ -195,7 +290,15 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             Some(l) => l.update(force, dt_s),
             None => force,
         };
-        let force_f = self.force_filter.update(force, dt_s);
+        (self.force_filter.update(force, dt_s), force_still_f)
+    }
+
+    /// The angle's side of one step on the boom angle `angle_deg` (°, offset
+    /// removed), `dt_s` after its previous: the filter, rate, acceleration,
+    /// direction (which checks a creep against the filtered force
+    /// `force_f`, N) and the seals' release. The force fields of the step
+    /// returned are `force_f`.
+    fn angle_step(&mut self, angle_deg: T, dt_s: T, force_f: T) -> ChainStep<T> {
         let angle_f = self.angle_filter.update(angle_deg, dt_s);
         // Rate and acceleration as differences of the filtered angle: the
         // filter already removed the noise, and no further filter may delay
@@ -237,7 +340,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         };
         ChainStep {
             force_n: force_f,
-            force_still_n: force_still_f,
+            force_still_n: force_f,
             angle_deg: angle_f,
             rate_deg_s: rate_f,
             accel_deg_s2: accel_f,
@@ -262,7 +365,9 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
                     // none yet.
                     b.restart_averages();
                 }
-                let accel = if settling { T::lit(0.0) } else { step.accel_deg_s2 * to_rad };
+                // After a restart of the force alone the angle filter ran on:
+                // its acceleration is the boom's.
+                let accel = if settling && self.angle_restarted { T::lit(0.0) } else { step.accel_deg_s2 * to_rad };
                 b.advance(step.angle_deg * to_rad, step.rate_deg_s * to_rad, accel, dt_s)
             }
             None => T::lit(0.0),
@@ -271,7 +376,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     }
 }
 
-/// What one step of the signal chain gives ([`Limiter::filter_step`],
+/// What one step of the signal chain gives ([`Limiter::angle_step`],
 /// [`Limiter::advance_bank`]).
 #[derive(Debug, Clone, Copy)]
 struct ChainStep<T> {
