@@ -170,7 +170,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             let angle_gap_s = self.angle_gap_s.take();
             match (self.last_good, angle_gap_s) {
                 (Some(from), _) if kept && gap_s <= T::lit(PAUSE_GAP_S) => {
-                    force_dt_s = Some(self.fill_force_gap(from.0, force, gap_s, dt_s));
+                    force_dt_s = Some(self.fill_gap(from, (force, angle_deg), gap_s, dt_s, false));
                 }
                 _ if kept => self.restart_force_filters(),
                 (_, Some(angle_gap_s)) => {
@@ -182,7 +182,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
                     dt_s += angle_gap_s;
                 }
                 (Some(from), None) if gap_s <= T::lit(PAUSE_GAP_S) => {
-                    dt_s = self.fill_gap(from, (force, angle_deg), gap_s, dt_s);
+                    dt_s = self.fill_gap(from, (force, angle_deg), gap_s, dt_s, true);
                 }
                 _ => {
                     // The filters start afresh on this sample; the swing
@@ -232,8 +232,10 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     /// sample `to` that came `dt_s` after the last bad one, on the straight
     /// line from the last good sample `from` (force N, angle °): sub-steps
     /// of the sample period, or of 1/[`MAX_GAP_STEPS`] of the interval when
-    /// that is longer (a bounded loop). Returns the step left for `to`.
-    fn fill_gap(&mut self, from: (T, T), to: (T, T), gap_s: T, dt_s: T) -> T {
+    /// that is longer (a bounded loop). Only the force's side when the angle's
+    /// went on through the gap (`with_angle` false). Returns the step left
+    /// for `to`.
+    fn fill_gap(&mut self, from: (T, T), to: (T, T), gap_s: T, dt_s: T, with_angle: bool) -> T {
         let total = gap_s + dt_s;
         if !(dt_s > T::lit(0.0) && total.is_finite()) {
             return total;
@@ -248,32 +250,13 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             t += h;
             let s = t / total;
             let (force_f, force_still_f) = self.force_step(from.0 + s * (to.0 - from.0), h);
-            let filtered = ChainStep { force_n: force_f, force_still_n: force_still_f, ..self.angle_step(from.1 + s * (to.1 - from.1), h, force_f) };
-            // The swing too: taken over the gap in one step with the
-            // acceleration at its end, a held load raised to 66° read 1.10 ×
-            // (campaign seed 3, #6036).
-            self.advance_bank(filtered, h);
-        }
-        total - t
-    }
-
-    /// The force's sub-steps through a gap of `gap_s` whose angle the chain
-    /// kept, on the straight line from the last good force `from` to this
-    /// sample's `to` (N), as [`Self::fill_gap`] steps; returns the step
-    /// left for `to`.
-    fn fill_force_gap(&mut self, from: T, to: T, gap_s: T, dt_s: T) -> T {
-        let total = gap_s + dt_s;
-        if !(dt_s > T::lit(0.0) && total.is_finite()) {
-            return total;
-        }
-        let h = dt_s.max(total / T::lit(MAX_GAP_STEPS as f64));
-        let mut t = T::lit(0.0);
-        for _ in 1..MAX_GAP_STEPS {
-            if t + h * T::lit(1.5) > total {
-                break;
+            if with_angle {
+                let filtered = ChainStep { force_n: force_f, force_still_n: force_still_f, ..self.angle_step(from.1 + s * (to.1 - from.1), h, force_f) };
+                // The swing too: taken over the gap in one step with the
+                // acceleration at its end, a held load raised to 66° read 1.10 ×
+                // (campaign seed 3, #6036).
+                self.advance_bank(filtered, h);
             }
-            t += h;
-            self.force_step(from + t / total * (to - from), h);
         }
         total - t
     }
