@@ -94,6 +94,15 @@ pub struct ChannelLimits<T> {
     pub stuck_band: T,
 }
 
+impl<T: Real> ChannelLimits<T> {
+    /// Whether a change of `change` over `dt_s` is faster than the channel
+    /// can change, the rate taken over at least `period_s` (the cycle's
+    /// nominal period: see the module doc).
+    pub fn exceeds_rate(&self, change: T, dt_s: T, period_s: T) -> bool {
+        change.abs() > self.max_rate_per_s * dt_s.max(period_s)
+    }
+}
+
 /// Parameters of [`PlausibilityMonitor`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PlausibilityConfig<T> {
@@ -211,7 +220,7 @@ impl<T: Real> PlausibilityMonitor<T> {
             let limits = self.config.limits(i);
             if let Some(last) = h.last {
                 if dt_s > T::lit(0.0)
-                    && (v - last).abs() > limits.max_rate_per_s * dt_s.max(self.period_s)
+                    && limits.exceeds_rate(v - last, dt_s, self.period_s)
                     && fault.is_none()
                 {
                     fault = Some((i, FaultKind::RateOfChange));

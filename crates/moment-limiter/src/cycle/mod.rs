@@ -114,6 +114,23 @@ pub const MAX_GAP_STEPS: usize = 25;
 /// Checked readings of one cycle.
 type Readings<T> = (PressureBar<T>, PressureBar<T>, BoomAngle<T>);
 
+/// A cycle without its three readings: the first channel's fault in channel
+/// order, and the angle when its own reading is good (it goes on through a
+/// pressure's fault, see [`PAUSE_GAP_S`]).
+type ReadingsFault<T> = (SensorFault, Option<BoomAngle<T>>);
+
+/// The three channels' results of one cycle as one.
+fn readings<T>(
+    p1: Result<PressureBar<T>, SensorFault>,
+    p2: Result<PressureBar<T>, SensorFault>,
+    angle: Result<BoomAngle<T>, SensorFault>,
+) -> Result<Readings<T>, ReadingsFault<T>> {
+    match (p1, p2, angle) {
+        (Ok(p1), Ok(p2), Ok(a)) => Ok((p1, p2, a)),
+        (Err(f), _, a) | (_, Err(f), a) | (_, _, a @ Err(f)) => Err((f, a.ok())),
+    }
+}
+
 /// The load moment limiter: configuration, model and running state.
 ///
 /// ## Time alignment
@@ -293,13 +310,11 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     #[inline(never)]
     pub fn step_frame(&mut self, frame: &Frame<T>) -> StepReport<T> {
         let fault = |channel: Channel| move |kind: FaultKind| SensorFault { channel, kind };
-        let p1 = PressureBar::new(frame.p1_bar).map_err(fault(Channel::PistonSidePressure));
-        let p2 = PressureBar::new(frame.p2_bar).map_err(fault(Channel::RodSidePressure));
-        let a = BoomAngle::new(frame.boom_angle_deg).map_err(fault(Channel::BoomAngle));
-        let readings = match (p1, p2, a) {
-            (Ok(p1), Ok(p2), Ok(a)) => Ok((p1, p2, a)),
-            (Err(f), _, a) | (_, Err(f), a) | (_, _, a @ Err(f)) => Err((f, a.ok())),
-        };
+        let readings = readings(
+            PressureBar::new(frame.p1_bar).map_err(fault(Channel::PistonSidePressure)),
+            PressureBar::new(frame.p2_bar).map_err(fault(Channel::RodSidePressure)),
+            BoomAngle::new(frame.boom_angle_deg).map_err(fault(Channel::BoomAngle)),
+        );
         self.step_readings(frame.t, readings)
     }
 
@@ -307,7 +322,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
     fn step_readings(
         &mut self,
         t: Ticks,
-        readings: Result<Readings<T>, (SensorFault, Option<BoomAngle<T>>)>,
+        readings: Result<Readings<T>, ReadingsFault<T>>,
     ) -> StepReport<T> {
         // Clock: the step comes from the integer difference; a stalled,
         // jumping or backwards clock is a fault (the step is then 0).

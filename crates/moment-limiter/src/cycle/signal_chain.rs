@@ -5,7 +5,7 @@
 use crane_model::loads::load_model::{BoomState, HookLoadModel};
 use crane_model::Real;
 
-use super::{Limiter, Readings, MAX_GAP_STEPS, PAUSE_GAP_S};
+use super::{readings, Limiter, Readings, ReadingsFault, MAX_GAP_STEPS, PAUSE_GAP_S};
 use crate::checks::{FaultKind, SensorFault};
 use crate::filter::exp_taylor3;
 use crate::io::{Channel, Measurement, SensorInputs};
@@ -35,9 +35,8 @@ fn extrapolate<T: Real>(angle: T, rate: T, accel: T, horizon_s: T) -> (T, T) {
 }
 
 impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
-    /// The three readings of one cycle, or the first channel's fault in
-    /// channel order and the angle when its own reading is good.
-    pub(super) fn read_counts<S: SensorInputs>(&self, inputs: &mut S) -> Result<Readings<T>, (SensorFault, Option<BoomAngle<T>>)> {
+    /// The three readings of one cycle (see [`ReadingsFault`]).
+    pub(super) fn read_counts<S: SensorInputs>(&self, inputs: &mut S) -> Result<Readings<T>, ReadingsFault<T>> {
         let conv = &self.config.conversion;
         let fault = |channel: Channel| move |kind: FaultKind| SensorFault { channel, kind };
         let read = |inputs: &mut S, channel: Channel| {
@@ -58,10 +57,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         });
         let a = read(inputs, Channel::BoomAngle)
             .and_then(|c| conv.boom_angle(c).map_err(fault(Channel::BoomAngle)));
-        match (p1, p2, a) {
-            (Ok(p1), Ok(p2), Ok(a)) => Ok((p1, p2, a)),
-            (Err(f), _, a) | (_, Err(f), a) | (_, _, a @ Err(f)) => Err((f, a.ok())),
-        }
+        readings(p1, p2, a)
     }
 
     /// A bad cycle: no faulty value ever reaches the filters. The chain
@@ -84,17 +80,17 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             self.angle_gap_s = None;
         }
         let angle_deg = angle.map(|a| a.degrees() - self.config.calibration.angle_offset_deg);
-        // The rate check the monitor cannot make on a gap's readings: a
-        // jump no boom makes would kick every pendulum.
-        let max_step = self.config.plausibility.angle.max_rate_per_s * dt_s.max(self.config.clock.period_s());
+        // The monitor's rate check, which it cannot make on a gap's
+        // readings: a jump no boom makes would kick every pendulum.
+        let limits = self.config.plausibility.angle;
         let credible = match (angle_deg, self.last_good) {
-            (Some(a), Some((_, last))) => (a - last).abs() <= max_step,
+            (Some(a), Some((_, last))) => !limits.exceeds_rate(a - last, dt_s, self.config.clock.period_s()),
             _ => false,
         };
         match angle_deg {
             Some(angle_deg) if self.angle_kept && credible && dt_s > T::lit(0.0) => {
-                let held_force_n = self.force_filter.output().unwrap_or(T::lit(0.0));
-                let step = self.angle_step(angle_deg, dt_s, held_force_n);
+                let held_n = self.force_filter.output().unwrap_or(T::lit(0.0));
+                let step = self.angle_step(angle_deg, dt_s, (held_n, held_n));
                 self.advance_bank(step, dt_s);
                 if let Some((force, _)) = self.last_good {
                     self.last_good = Some((force, angle_deg));
@@ -193,8 +189,8 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             }
         }
         self.last_good = Some((force, angle_deg));
-        let (force_f, force_still_f) = self.force_step(force, force_dt_s.unwrap_or(dt_s));
-        let filtered = ChainStep { force_n: force_f, force_still_n: force_still_f, ..self.angle_step(angle_deg, dt_s, force_f) };
+        let force_f = self.force_step(force, force_dt_s.unwrap_or(dt_s));
+        let filtered = self.angle_step(angle_deg, dt_s, force_f);
         let step = self.advance_bank(filtered, dt_s);
         let (angle_f, rate_f, accel_f) = (step.angle_deg, step.rate_deg_s, step.accel_deg_s2);
         // Time alignment (see the type's doc): the filtered force and the
@@ -249,9 +245,9 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             }
             t += h;
             let s = t / total;
-            let (force_f, force_still_f) = self.force_step(from.0 + s * (to.0 - from.0), h);
+            let force_f = self.force_step(from.0 + s * (to.0 - from.0), h);
             if with_angle {
-                let filtered = ChainStep { force_n: force_f, force_still_n: force_still_f, ..self.angle_step(from.1 + s * (to.1 - from.1), h, force_f) };
+                let filtered = self.angle_step(from.1 + s * (to.1 - from.1), h, force_f);
                 // The swing too: taken over the gap in one step with the
                 // acceleration at its end, a held load raised to 66° read 1.10 ×
                 // (campaign seed 3, #6036).
@@ -278,10 +274,11 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
 
     /// The angle's side of one step on the boom angle `angle_deg` (°, offset
     /// removed), `dt_s` after its previous: the filter, rate, acceleration,
-    /// direction (which checks a creep against the filtered force
-    /// `force_f`, N) and the seals' release. The force fields of the step
-    /// returned are `force_f`.
-    fn angle_step(&mut self, angle_deg: T, dt_s: T, force_f: T) -> ChainStep<T> {
+    /// direction and the seals' release; the step returned carries the
+    /// force's side `(force_f, force_still_f)` ([`Self::force_step`], or the
+    /// held force through a gap), against whose filtered force the direction
+    /// checks a creep.
+    fn angle_step(&mut self, angle_deg: T, dt_s: T, (force_f, force_still_f): (T, T)) -> ChainStep<T> {
         let angle_f = self.angle_filter.update(angle_deg, dt_s);
         // Rate and acceleration as differences of the filtered angle: the
         // filter already removed the noise, and no further filter may delay
@@ -323,7 +320,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         };
         ChainStep {
             force_n: force_f,
-            force_still_n: force_f,
+            force_still_n: force_still_f,
             angle_deg: angle_f,
             rate_deg_s: rate_f,
             accel_deg_s2: accel_f,
