@@ -867,8 +867,8 @@ fn a_lowering_after_a_raise_and_a_rest_f32() {
 /// in 15 s; every rope, both friction laws. Returns the cases cut before
 /// true u = 1/1.1, or with a sample at a true u ≥ 1.05 that is neither
 /// OVERLOAD nor FAULT (cut late or released).
-fn lowering_after_a_load_added_at_rest(precision: Precision, rest: f64) -> Vec<String> {
-    let mut failures = Vec::new();
+fn lowering_after_a_load_added_at_rest(precision: Precision, rest: f64) -> (Vec<String>, f64) {
+    let (mut failures, mut highest_uncut) = (Vec::new(), 0.0f64);
     for rope in ROPES {
         for seals in SEALS {
             for rated_at in [45.0f64, 30.0] {
@@ -877,10 +877,11 @@ fn lowering_after_a_load_added_at_rest(precision: Precision, rest: f64) -> Vec<S
                 let pts = replay_rows(&rows, seals, precision);
                 let name = format!("60->80, {rest} s at rest, 60 % -> 100 % of rated at {rated_at}, 80->20 15s {rope:?} {seals:?}");
                 failures.extend(lowering_bound_failures(&name, &pts));
+                highest_uncut = uncut(&pts).map(|q| q.u).fold(highest_uncut, f64::max);
             }
         }
     }
-    failures
+    (failures, highest_uncut)
 }
 
 /// [`lowering_after_a_load_added_at_rest`] 14 s after the stop, when the
@@ -893,7 +894,7 @@ fn lowering_after_a_load_added_at_rest(precision: Precision, rest: f64) -> Vec<S
 /// rope was cut at true u 1.079–1.085 (at the start of the session also the
 /// 3 m rope's cut was released at 1.05).
 fn lowering_after_a_load_added_14_s_after_the_stop(precision: Precision) {
-    let failures = lowering_after_a_load_added_at_rest(precision, 14.0);
+    let (failures, _) = lowering_after_a_load_added_at_rest(precision, 14.0);
     assert!(failures.is_empty(), "{failures:#?}");
 }
 
@@ -911,14 +912,40 @@ fn a_lowering_after_a_load_added_at_rest_f32() {
 /// stop at 80°, before the swing's period is known, on ropes where no rope
 /// of the bank follows the swing (`a_load_added_at_rest_after_a_move_known_gap`):
 /// nothing has weighed the new load when the lowering starts 6 s after the
-/// take-up, and the 8.9 m rope is cut only at true u 1.13–1.135, the 3 m
-/// rope (seal friction) releases its cut at 1.06. The same at the start of
-/// this session.
+/// take-up, and the 8.9 m rope is cut only at true u 1.128–1.133, the 3 m
+/// rope (seal friction) releases its cut at 1.06. For a while (1e42ddb to
+/// this test's pin below) the 8.9 m rope was cut only at 1.245–1.249, and the
+/// thesis's rope and the 3 m one with constant friction released their cut
+/// at 1.05.
 #[test]
 #[ignore = "KNOWN GAP: a load added 3 s after a stop at 80 deg, then lowered past the rated radius: cut late (true u 1.13) where no rope follows the swing"]
 fn a_lowering_soon_after_a_load_added_at_rest_known_gap() {
-    let failures = lowering_after_a_load_added_at_rest(Precision::F64, 3.0);
+    let (failures, _) = lowering_after_a_load_added_at_rest(Precision::F64, 3.0);
     assert!(failures.is_empty(), "{failures:#?}");
+}
+
+/// The known gap above pinned at its measured size, so that it cannot
+/// widen unseen: no sample of those lowerings at a true u over 1.14 goes
+/// uncut (measured, f64 and f32: the highest uncut 1.13, the 8.9 m rope cut at
+/// 1.128–1.133). It once did: restarting the rope that was the bank's
+/// weighing at that weighing, not at its reading (`moment_limiter::static_load`,
+/// "A load added at rest that nothing weighed"), left the averages at the
+/// old load through the whole lowering, and the 8.9 m rope was cut only at
+/// true u 1.245–1.249, with no test failing.
+fn a_lowering_soon_after_a_load_added_at_rest_is_cut_by_1_14(precision: Precision) {
+    let (_, highest_uncut) = lowering_after_a_load_added_at_rest(precision, 3.0);
+    println!("{precision:?}: highest true u not cut {highest_uncut:.3}");
+    assert!(highest_uncut <= 1.14, "a sample at true u {highest_uncut:.3} not cut");
+}
+
+#[test]
+fn a_lowering_soon_after_a_load_added_at_rest_is_cut_by_1_14_f64() {
+    a_lowering_soon_after_a_load_added_at_rest_is_cut_by_1_14(Precision::F64);
+}
+
+#[test]
+fn a_lowering_soon_after_a_load_added_at_rest_is_cut_by_1_14_f32() {
+    a_lowering_soon_after_a_load_added_at_rest_is_cut_by_1_14(Precision::F32);
 }
 
 /// A lowering past the rated radius inched, as an operator does near the
@@ -968,11 +995,15 @@ fn inched_lowering(precision: Precision) -> (Vec<String>, Vec<String>) {
 }
 
 /// [`inched_lowering`]: never a true u of 1.05 or more without the cut
-/// (OVERLOAD or FAULT). Early cuts are [`inched_lowering_known_gap`]'s.
+/// (OVERLOAD or FAULT). Early cuts are [`inched_lowering_known_gap`]'s,
+/// pinned here at its measured size (3 of 64, from true u 0.882) so that it
+/// cannot widen unseen.
 fn inched_lowering_is_cut(precision: Precision) {
     let (early, late) = inched_lowering(precision);
     println!("{precision:?}: {} early: {early:#?}", early.len());
     assert!(late.is_empty(), "{late:#?}");
+    let lowest = early.iter().filter_map(|e| e.rsplit(' ').next()?.parse::<f64>().ok()).fold(f64::INFINITY, f64::min);
+    assert!(early.len() <= 3 && lowest >= 0.88, "{} early, from true u {lowest:.3}", early.len());
 }
 
 #[test]
@@ -986,17 +1017,17 @@ fn an_inched_lowering_is_cut_f32() {
 }
 
 /// KNOWN GAP, measured (f64; f32 alike): an inched lowering
-/// ([`inched_lowering`]) is cut early, toward safety, in 10 of 64 cases: at
-/// true u 0.804–0.844 (the 8.9 m rope in 6° steps with 4 s pauses),
-/// 0.883–0.888 (the 3 m rope in 3° steps, the load rated at 45°) and
-/// 0.904–0.908 (the 6.0 m rope in 5° steps, the 8.9 m rope in 3° steps).
-/// Each pause starts a swing the next move meets out of phase. Before the
-/// averages carried the rest's weighing into the next move
-/// (`moment_limiter::static_load`), 7 of 64 (the 3 m rope in 3° steps at
-/// 0.906, with constant friction only; the 6.0 m rope's only with the load
-/// rated at 45°).
+/// ([`inched_lowering`]) is cut early, toward safety, in 3 of 64 cases: at
+/// true u 0.882–0.887 (the 3 m rope in 3° steps with 1 s pauses, the load
+/// rated at 45°, both friction laws) and 0.908 (the 8.9 m rope in 3° steps,
+/// constant friction, rated at 30°). Each pause starts a swing the next move
+/// meets out of phase. It was 10 of 64 (from 0.804: the 8.9 m rope in 6°
+/// steps with 4 s pauses, the 6.0 m rope in 5° steps) until the rope that
+/// was the bank's weighing restarted at it in motion (1e42ddb), which closed
+/// seven of them unseen here; before the averages carried the rest's
+/// weighing into the next move (`moment_limiter::static_load`), 7 of 64.
 #[test]
-#[ignore = "KNOWN GAP: an inched lowering past the rated radius is cut early (toward safety) in 10 of 64 cases, from true u 0.804"]
+#[ignore = "KNOWN GAP: an inched lowering past the rated radius is cut early (toward safety) in 3 of 64 cases, from true u 0.882"]
 fn inched_lowering_known_gap() {
     let (early, _) = inched_lowering(Precision::F64);
     assert!(early.is_empty(), "{early:#?}");
@@ -1198,6 +1229,27 @@ fn lift_off_in_half_a_second_on_a_short_rope_at_a_steep_boom_known_gap() {
     assert!(failures.is_empty(), "{failures:#?}");
 }
 
+/// The known gap above pinned at its measured size: taken up in 0.5 s, 90 %
+/// is never an OVERLOAD and 110 % is cut within 1.10 s of leaving the
+/// ground (measured, f64 and f32: at most 1.05 s, the 3 m rope at 80°), so
+/// that the gap cannot widen unseen.
+fn lift_off_in_half_a_second_is_cut_within_1_1_s(precision: Precision) {
+    let (failures, worst) = lift_offs_over(precision, &[10.0, 20.0, 35.0, 65.0, 80.0], &[0.5]);
+    let other: Vec<&String> = failures.iter().filter(|f| !f.ends_with("s after it leaves the ground")).collect();
+    assert!(other.is_empty(), "{other:#?}");
+    assert!(worst <= 1.10, "110 % cut {worst:.2} s after it leaves the ground");
+}
+
+#[test]
+fn lift_off_in_half_a_second_is_cut_within_1_1_s_f64() {
+    lift_off_in_half_a_second_is_cut_within_1_1_s(Precision::F64);
+}
+
+#[test]
+fn lift_off_in_half_a_second_is_cut_within_1_1_s_f32() {
+    lift_off_in_half_a_second_is_cut_within_1_1_s(Precision::F32);
+}
+
 #[test]
 fn lift_off_f64() {
     lift_off(Precision::F64, &SEALS);
@@ -1298,8 +1350,8 @@ fn lift_off_with_an_ideal_bounce(angle_deg: f64, load_kg: f64, bounce_hz: f64, z
 /// 80°, bounces of 1, 1.5 and 2 Hz with damping ratios 0.02 and 0.06, taken
 /// up over `take_ups`: 90 % of rated never OVERLOAD, 110 % OVERLOAD within
 /// 1 s of leaving the ground. Returns the failures and prints every case.
-fn lift_off_against_an_ideal_bounce(precision: Precision, take_ups: &[f64]) -> Vec<String> {
-    let mut failures = Vec::new();
+fn lift_off_against_an_ideal_bounce(precision: Precision, take_ups: &[f64]) -> (Vec<String>, f64) {
+    let (mut failures, mut worst) = (Vec::new(), 0.0f64);
     for angle in [20.0f64, 50.0, 80.0] {
         let rated = rated_kg(angle.to_radians());
         for bounce_hz in [1.0, 1.5, 2.0] {
@@ -1313,6 +1365,9 @@ fn lift_off_against_an_ideal_bounce(precision: Precision, take_ups: &[f64]) -> V
                         let peak = pts.iter().filter(|p| p.u > 0.0).map(|p| p.ratio * p.u).fold(0.0, f64::max);
                         let name = format!("{angle:.0} deg, {:.0} % of rated, bounce {bounce_hz} Hz, zeta {zeta}, taken up in {take_up} s", frac * 100.0);
                         println!("{name:<62} peak estimated u {peak:.3}, OVERLOAD {}", first.map_or("none".into(), |f| format!("at {:+.2} s from leaving the ground", f.0 - off)));
+                        if let (true, Some((t, _))) = (must, first) {
+                            worst = worst.max(t - off);
+                        }
                         match (must, first) {
                             (false, Some((t, _))) => failures.push(format!("{name}: OVERLOAD at {t:.2} s (peak estimated u {peak:.3})")),
                             (true, None) => failures.push(format!("{name}: no OVERLOAD")),
@@ -1324,19 +1379,19 @@ fn lift_off_against_an_ideal_bounce(precision: Precision, take_ups: &[f64]) -> V
             }
         }
     }
-    println!("{precision:?}: {} failures", failures.len());
-    failures
+    println!("{precision:?}: {} failures, 110 % cut at most {worst:.2} s after leaving the ground", failures.len());
+    (failures, worst)
 }
 
 #[test]
 fn lift_off_against_an_ideal_bounce_f64() {
-    let failures = lift_off_against_an_ideal_bounce(Precision::F64, &[0.8, 1.2, 2.0]);
+    let (failures, _) = lift_off_against_an_ideal_bounce(Precision::F64, &[0.8, 1.2, 2.0]);
     assert!(failures.is_empty(), "{failures:#?}");
 }
 
 #[test]
 fn lift_off_against_an_ideal_bounce_f32() {
-    let failures = lift_off_against_an_ideal_bounce(Precision::F32, &[0.8, 1.2, 2.0]);
+    let (failures, _) = lift_off_against_an_ideal_bounce(Precision::F32, &[0.8, 1.2, 2.0]);
     assert!(failures.is_empty(), "{failures:#?}");
 }
 
@@ -1352,8 +1407,20 @@ fn lift_off_against_an_ideal_bounce_f32() {
 #[test]
 #[ignore = "KNOWN GAP: a lift-off snatched in 0.5 s or less against a bounce of 1-2 Hz: 90 % cuts (1 Hz) or, in 0.3 s, 110 % is cut up to 1.09 s after leaving the ground (1.5-2 Hz)"]
 fn lift_off_snatched_against_an_ideal_bounce_known_gap() {
-    let failures = lift_off_against_an_ideal_bounce(Precision::F64, &[0.3, 0.5]);
+    let (failures, _) = lift_off_against_an_ideal_bounce(Precision::F64, &[0.3, 0.5]);
     assert!(failures.is_empty(), "{failures:#?}");
+}
+
+/// The known gap above pinned at its measured size: snatched in 0.3 s or
+/// 0.5 s against an ideal bounce of 1–2 Hz, 110 % is cut within 1.15 s of
+/// leaving the ground (measured, f64: at most 1.09 s), and 90 % is an
+/// OVERLOAD only behind the 1 Hz bounce (the gap's other half).
+#[test]
+fn lift_off_snatched_against_an_ideal_bounce_is_cut_within_1_15_s() {
+    let (failures, worst) = lift_off_against_an_ideal_bounce(Precision::F64, &[0.3, 0.5]);
+    let other: Vec<&String> = failures.iter().filter(|f| !f.ends_with("s after lift") && !(f.contains("90 % of rated, bounce 1 Hz"))).collect();
+    assert!(other.is_empty(), "{other:#?}");
+    assert!(worst <= 1.15, "110 % cut {worst:.2} s after it leaves the ground");
 }
 
 /// Runs `f` with this thread's `setting` at `value`, then as before.
