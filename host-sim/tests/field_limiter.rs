@@ -1459,19 +1459,21 @@ fn lift_off_fast_on_a_slow_sensor_f32() {
 /// estimate followed at the slow averages' pace (seen after up to 6 s, or
 /// not within 7 s, in the bank's unit test).
 fn load_added_at_rest_after_a_move(precision: Precision, cases: &[(f64, f64, Rope)]) {
-    let (failures, _) = load_added_at_rest_after_a_move_measured(precision, cases);
+    let (failures, _) = load_added_at_rest_after_a_move_measured(precision, cases, 4.0);
     assert!(failures.is_empty(), "{failures:#?}");
 }
 
-/// [`load_added_at_rest_after_a_move`]'s cases, measured: the failures and
-/// the worst of the cuts of 110 % (s after its take-up; infinite when one is
-/// not cut) and of 90 % (true u of the first OVERLOAD; 0 when none is).
-fn load_added_at_rest_after_a_move_measured(precision: Precision, cases: &[(f64, f64, Rope)]) -> (Vec<String>, (f64, f64)) {
+/// [`load_added_at_rest_after_a_move`]'s cases, measured over `after_s` at
+/// rest after the take-up (4 s there): the failures and the worst of the
+/// cuts of 110 % (its first OVERLOAD, s after its take-up, infinite when
+/// none comes; and the longest time it is not [`cut`] after its take-up, s)
+/// and of 90 % (true u of the first OVERLOAD; 0 when none is).
+fn load_added_at_rest_after_a_move_measured(precision: Precision, cases: &[(f64, f64, Rope)], after_s: f64) -> (Vec<String>, (f64, f64, f64)) {
     const TAKE_UP_S: f64 = 0.5;
     const AT_REST_S: f64 = 3.0;
     let mut failures = Vec::new();
     let mut worst_seen: f64 = 0.0;
-    let (mut slowest_cut, mut cut_at_90) = (0.0f64, 0.0f64);
+    let (mut slowest_cut, mut cut_at_90, mut longest_uncut) = (0.0f64, 0.0f64, 0.0f64);
     for &(from, to, rope) in cases {
         let w0 = 0.6 * rated_kg(from.min(to).to_radians());
         {
@@ -1479,7 +1481,7 @@ fn load_added_at_rest_after_a_move_measured(precision: Precision, cases: &[(f64,
                 for (frac, must) in [(0.9, false), (1.1, true)] {
                     let w1 = frac * rated_kg(to.to_radians());
                     let name = format!("{from:.0}->{to:.0} 10s {rope:?} {seals:?}: {w0:.0} kg, +{:.0} kg at rest", w1 - w0);
-                    let rows = lift_after_a_move(from, to, rope, seals, w0, AT_REST_S, TAKE_UP_S, w1, 4.0);
+                    let rows = lift_after_a_move(from, to, rope, seals, w0, AT_REST_S, TAKE_UP_S, w1, after_s);
                     let pts = replay_rows(&rows, seals, precision);
                     let lifted = HOLD_BEFORE_S + 10.0 + AT_REST_S + TAKE_UP_S;
                     // Seen: the estimate at 1/1.1 of the true load, where a
@@ -1494,6 +1496,10 @@ fn load_added_at_rest_after_a_move_measured(precision: Precision, cases: &[(f64,
                         first.map_or("none".into(), |f| format!("at {:+.2} s, true u {:.3}", f.0 - lifted, f.1))
                     );
                     worst_seen = worst_seen.max(seen.unwrap_or(f64::INFINITY));
+                    if must {
+                        let uncut_s = pts.iter().filter(|q| q.t >= lifted && !cut(q)).count() as f64 / rate_hz();
+                        longest_uncut = longest_uncut.max(uncut_s);
+                    }
                     match (must, first) {
                         (true, f) => slowest_cut = slowest_cut.max(f.map_or(f64::INFINITY, |f| f.0 - lifted)),
                         (false, Some((_, u))) => cut_at_90 = cut_at_90.max(u),
@@ -1513,7 +1519,7 @@ fn load_added_at_rest_after_a_move_measured(precision: Precision, cases: &[(f64,
         }
     }
     println!("{precision:?}: {} failures of {}; slowest estimate to reach 1/1.1 of the true load {worst_seen:.2} s after the take-up", failures.len(), 4 * cases.len());
-    (failures, (slowest_cut, cut_at_90))
+    (failures, (slowest_cut, cut_at_90, longest_uncut))
 }
 
 /// A load lifted after a move with the hook empty (a 10 s cycloidal move,
@@ -1688,9 +1694,12 @@ fn a_load_added_at_rest_after_a_move_on_a_slow_sensor() {
 /// 5.5 m and 13 m ropes stopped at 80° (between the bank's lengths, whose
 /// swings drift out of phase with the true one; at 80° the load swung inward
 /// barely pulls on the cylinder): the added load is seen after 1.9–2.2 s or
-/// not within 4 s (an 110 % load then cuts only when the averages catch up),
-/// and 90 % added to the 3 m rope at 80° cuts 3.16 s after the take-up at a
-/// true 0.90 (as before this bank's rescale). Since the pendulums swing
+/// not within 4 s: an 110 % load then cuts only when the averages catch up
+/// or the mean over one swing period weighs it (the 13 m rope at 80°: left
+/// uncut for 11.98 s of the 20 s after its take-up), and on the 3 m rope at
+/// 80° the swing takes p1 past its range at every crest, whose FAULTs cut
+/// with NORMAL between them. (90 % added to the 3 m rope at 80° once cut
+/// 3.16 s after the take-up at a true 0.90; re-measured, no more.) Since the pendulums swing
 /// longer by the boom's give at rest (`moment_limiter::static_load`), the
 /// 3 m rope at 60° with the seals' friction is seen after 0.86–0.91 s (1.88
 /// before) and cut at +0.96 s; with constant friction still after 1.88 s.
@@ -1702,6 +1711,27 @@ fn a_load_added_at_rest_after_a_move_on_a_slow_sensor() {
 #[ignore = "KNOWN GAP: a load added at rest where no rope of the bank follows the true swing (short ropes at 60-80 deg, ropes between the grid's lengths at 80 deg): seen after 1.9-2.2 s or not within 4 s"]
 fn a_load_added_at_rest_after_a_move_known_gap() {
     load_added_at_rest_after_a_move(Precision::F64, &ADDED_GAP);
+}
+
+/// The known gap above pinned at its measured size, so that it cannot widen
+/// unseen: over the 20 s after the take-up, 110 % added at rest on these
+/// ropes is left uncut (neither OVERLOAD nor FAULT) for at most 12.5 s
+/// (measured, f64 and f32: 11.98 s, the 13 m rope stopped at 80°, until
+/// the mean over one swing period weighs it), and 90 % is never an OVERLOAD.
+fn a_load_added_at_rest_where_no_rope_follows_is_cut_within_12_5_s(precision: Precision) {
+    let (_, (_, at_90, uncut_s)) = load_added_at_rest_after_a_move_measured(precision, &ADDED_GAP, 20.0);
+    println!("{precision:?}: 110 % uncut for at most {uncut_s:.2} s; 90 % first OVERLOAD at true u {at_90:.3} (0: none)");
+    assert!(uncut_s <= 12.5 && at_90 == 0.0, "110 % uncut for {uncut_s:.2} s; 90 % OVERLOAD at true u {at_90:.3}");
+}
+
+#[test]
+fn a_load_added_at_rest_where_no_rope_follows_is_cut_within_12_5_s_f64() {
+    a_load_added_at_rest_where_no_rope_follows_is_cut_within_12_5_s(Precision::F64);
+}
+
+#[test]
+fn a_load_added_at_rest_where_no_rope_follows_is_cut_within_12_5_s_f32() {
+    a_load_added_at_rest_where_no_rope_follows_is_cut_within_12_5_s(Precision::F32);
 }
 
 /// Moves after which a load added at rest on the paid-out rope (the
@@ -2934,11 +2964,11 @@ fn a_load_added_at_rest_with_stuck_seals_or_angle_noise_known_gap() {
 #[test]
 fn a_load_added_at_rest_with_stuck_seals_or_angle_noise_is_cut_within_4_s() {
     let mut worst = Vec::new();
-    let mut run = |name: &'static str| worst.push((name, load_added_at_rest_after_a_move_measured(Precision::F64, &ADDED_SEEN).1));
+    let mut run = |name: &'static str| worst.push((name, load_added_at_rest_after_a_move_measured(Precision::F64, &ADDED_SEEN, 4.0).1));
     with_setting(&STANDSTILL_RELEASE_S, 60.0, || run("stuck seals"));
     with_setting(&NOISE_DEG, Some(0.09), || run("0.09 deg of angle noise"));
     println!("{worst:?}");
-    assert!(worst.iter().all(|(_, (cut_s, at_90))| *cut_s <= 4.0 && *at_90 == 0.0), "{worst:?}");
+    assert!(worst.iter().all(|(_, (cut_s, at_90, _))| *cut_s <= 4.0 && *at_90 == 0.0), "{worst:?}");
 }
 
 /// Switched on at a steep boom behind noisy pressure sensors: 80 % of the
