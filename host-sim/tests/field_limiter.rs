@@ -1092,10 +1092,15 @@ fn swing_not_found_in_time(name: &str) -> bool {
 /// estimate reads 1.037–1.049 × the load at p5, 1.038–1.078 at p95 (1.223
 /// at most), f64 and f32 alike, and none is an OVERLOAD. Before, every one
 /// of the 24 read outside 1.00–1.10 there (p95 up to 2.98 on the 3 m rope at
-/// 80°, 2.42 on the 10 m one), and 8 were still an OVERLOAD.
+/// 80°, 2.42 on the 10 m one), and 8 were still an OVERLOAD. All 24 are
+/// also held to at most 14 s in OVERLOAD, pinning the known gap at its
+/// measured size (13.1 s, the 3 m rope at 80°;
+/// `power_up_with_the_load_swinging_known_gap`).
 fn power_up_with_the_load_swinging_weighs_the_mean(precision: Precision) {
     let mut failures = Vec::new();
+    let mut longest_overload_s = 0.0f64;
     for (name, [overload_s, _], high, mut late) in power_up_with_the_load_swinging(precision) {
+        longest_overload_s = longest_overload_s.max(overload_s);
         if swing_not_found_in_time(&name) {
             continue;
         }
@@ -1104,6 +1109,12 @@ fn power_up_with_the_load_swinging_weighs_the_mean(precision: Precision) {
         if !(p5 >= 1.0 && p95 <= 1.1) {
             failures.push(format!("{name}: from {SWING_FOUND_S} s after power-up p5 {p5:.3}, p95 {p95:.3}"));
         }
+    }
+    // The known gap (`power_up_with_the_load_swinging_known_gap`) pinned at
+    // its measured size: at most 13.1 s of OVERLOAD in any case, f64 and f32.
+    println!("{precision:?}: longest time in OVERLOAD {longest_overload_s:.1} s");
+    if longest_overload_s > 14.0 {
+        failures.push(format!("{longest_overload_s:.1} s in OVERLOAD (the known gap measured 13.1 s)"));
     }
     assert!(failures.is_empty(), "{failures:#?}");
 }
