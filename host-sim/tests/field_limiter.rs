@@ -1710,8 +1710,9 @@ fn a_load_added_at_rest_after_a_move_on_a_slow_sensor() {
 /// uncut for 11.98 s of the 20 s after its take-up), and on the 3 m rope at
 /// 80° the swing takes p1 past its range at every crest, whose FAULTs cut
 /// with NORMAL between them. (90 % added to the 3 m rope at 80° once cut
-/// 3.16 s after the take-up at a true 0.90; re-measured, no more.) Since the pendulums swing
-/// longer by the boom's give at rest (`moment_limiter::static_load`), the
+/// 3.16 s after the take-up at a true 0.90; re-measured, no more.) Since
+/// the pendulums swing longer by the boom's give at rest
+/// (`moment_limiter::static_load`), the
 /// 3 m rope at 60° with the seals' friction is seen after 0.86–0.91 s (1.88
 /// before) and cut at +0.96 s; with constant friction still after 1.88 s.
 /// The 13 m rope at 80° and the 3 m one at 60° with constant friction are

@@ -106,9 +106,9 @@
 //!   of rated made 100 % 3 s after a raise to 80° on an 8.9 m rope and
 //!   lowered at once past the rated radius was cut at true u 1.245–1.249
 //!   while the restart held the old load, instead of 1.128–1.133 (`host-sim`
-//!   test `a_lowering_soon_after_a_load_added_at_rest_is_cut_by_1_14_*`). At rest a hypothesis that cannot weigh keeps
-//!   its average and votes with it (the load swings on; its weighing from the move is the
-//!   best it has).
+//!   test `a_lowering_soon_after_a_load_added_at_rest_is_cut_by_1_14_*`).
+//!   At rest a hypothesis that cannot weigh keeps its average and votes with
+//!   it (the load swings on; its weighing from the move is the best it has).
 //!
 //! A held rope longer than the tip is high (the load would be below ground)
 //! is impossible: such hypotheses are left out while the boom is that low.
