@@ -169,25 +169,35 @@ pub struct SynthRow {
 }
 
 impl SynthRow {
-    /// The CSV line (no newline) `crane-sim synth` writes for this row.
+    /// The CSV line (no newline) `crane-sim synth` writes for this row: the
+    /// time to the millisecond where it is a whole one, else to the
+    /// microsecond (a 300 Hz log stamped to the millisecond would step by 3
+    /// and 4 ms by turns).
     pub fn csv_line(&self) -> String {
-        format!(
-            "{:.3},{:.3},{:.3},{:.3},{}",
-            self.t_s, self.p1_bar, self.p2_bar, self.boom_angle_deg, self.true_load_kg
-        )
+        let ms = self.t_s * 1e3;
+        let t = if (ms - ms.round()).abs() < 1e-6 { format!("{:.3}", self.t_s) } else { format!("{:.6}", self.t_s) };
+        format!("{t},{:.3},{:.3},{:.3},{}", self.p1_bar, self.p2_bar, self.boom_angle_deg, self.true_load_kg)
     }
 }
 
 /// Simulation options for a log sampled at `rate_hz`; returns them and the
-/// sample period (s), a whole number of 2 ms integration steps.
+/// sample period (s), exactly 1/`rate_hz`: a whole number of integration
+/// steps of at most the default 2 ms. Rates whose period is a multiple of
+/// 2 ms (20, 25, 50, 100, 125, 250, 500 Hz) keep the 2 ms step; others take
+/// the next shorter step that divides the period (200 Hz: three steps of
+/// 1.67 ms). Rounding to 2 ms steps instead gave 166.7 Hz for 200 Hz.
 pub fn options_for_rate(rate_hz: f64) -> (SimulationOptions, f64) {
     let mut options = SimulationOptions::for_type::<f64>();
     // Logs need the physics, not the reference iterate: the extrapolated start
     // saves about a fifth of the evaluations (the campaign uses the same).
     options.newton_start = NewtonStart::Extrapolated;
-    let every = (1.0 / (rate_hz * options.step_s)).round().max(1.0) as usize;
+    let period_s = 1.0 / rate_hz;
+    // The tolerance keeps an exact multiple (0.01 / 0.002 = 5.000000000000001)
+    // at its own count.
+    let every = (period_s / options.step_s - 1e-9).ceil().max(1.0) as usize;
     options.output_every = every;
-    (options, every as f64 * options.step_s)
+    options.step_s = period_s / every as f64;
+    (options, period_s)
 }
 
 /// Simulates `maneuver` and collects its samples.

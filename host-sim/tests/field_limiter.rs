@@ -2575,15 +2575,17 @@ fn a_sharp_or_blunt_friction_onset_keeps_the_bounds_f32() {
 /// Logs sampled at 200 Hz, at 50 Hz (the example logs' and `crane-sim
 /// synth`'s rate) and at 20 Hz (the slowest the log format takes) instead
 /// of 100 Hz, the crane calibrated from runs at the same rate. The bounds
-/// hold. Measured (f64): band in motion 1.008/1.034/1.048 at 200 Hz,
-/// 1.004/1.030/1.046 at 50 Hz, 1.006/1.037/1.071 at 20 Hz; at rest p5
-/// 0.9999 at 200 Hz, 0.998 at 50 Hz (the 17 m rope after a 10 s raise to
+/// hold. Measured (f64): band in motion 1.011/1.037/1.052 at 200 Hz,
+/// 1.006/1.031/1.048 at 50 Hz, 1.010/1.038/1.071 at 20 Hz; at rest p5
+/// 1.004 at 200 Hz, 0.998 at 50 Hz (the 17 m rope after a 10 s raise to
 /// 80°, 0.995: that calibration learns the constant 12 kN up-friction as
 /// 10.5 kN + 0.98 % of the force, which reads a raise low; the slope of a
 /// calibration from unloaded runs alone scatters with the noise, 0–1.2 %
-/// over three seeds at either rate) and 1.004 at 20 Hz.
+/// over three seeds at either rate) and 1.004 at 20 Hz. (Until the
+/// simulation's step was fitted to the period, "200 Hz" logs were sampled
+/// every 6 ms, at 166.7 Hz: rest p5 1.000 there.)
 fn logs_at_other_rates(precision: Precision) {
-    for (rate, rest_p5_may_miss) in [(200.0, true), (50.0, true), (20.0, false)] {
+    for (rate, rest_p5_may_miss) in [(200.0, false), (50.0, true), (20.0, false)] {
         with_setting(&LOG_RATE_HZ, rate, || {
             let (m, r) = other_world(precision, &SEALS);
             assert_band(&format!("{rate} Hz"), m, r, rest_p5_may_miss);

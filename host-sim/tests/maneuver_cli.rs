@@ -131,3 +131,25 @@ fn synth_friction_law_and_first_order_pendulum_reach_the_log() {
     assert_eq!(refused.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&refused.stderr).contains("must be at least the sliding force"), "{}", String::from_utf8_lossy(&refused.stderr));
 }
+
+/// `synth --rate-hz R` samples at R, not at the nearest whole number of the
+/// simulation's 2 ms steps (200 Hz came out every 6 ms, at 166.7 Hz), and
+/// stamps a period that is no whole millisecond to the microsecond, so the
+/// steps do not alternate (300 Hz: 3 and 4 ms).
+#[test]
+fn synth_samples_at_the_rate_asked_for() {
+    let dir = tempfile::tempdir().expect("tmp");
+    for rate in [200.0f64, 300.0, 150.0, 30.0, 50.0, 500.0] {
+        let out_path = dir.path().join(format!("r{rate}.csv")).to_string_lossy().into_owned();
+        let rate_arg = format!("{rate}");
+        let out = crane_sim(&["synth", "--from-deg", "50", "--to-deg", "52", "--duration", "2", "--load-kg", "2000", "--rate-hz", &rate_arg, "--out", &out_path]);
+        assert_eq!(out.status.code(), Some(0), "{rate} Hz: {}", String::from_utf8_lossy(&out.stderr));
+        let rows = csv(Path::new(&out_path));
+        let period = 1.0 / rate;
+        let steps: Vec<f64> = rows.windows(2).map(|w| w[1][0] - w[0][0]).collect();
+        let (lo, hi) = steps.iter().fold((f64::MAX, f64::MIN), |(lo, hi), &s| (lo.min(s), hi.max(s)));
+        assert!((lo - period).abs() < 2e-6 && (hi - period).abs() < 2e-6, "{rate} Hz: steps {lo}..{hi} s, want {period}");
+        let span = rows.last().expect("rows")[0] - rows[0][0];
+        assert!((span * rate - (rows.len() - 1) as f64).abs() < 1e-3, "{rate} Hz: {} rows over {span} s", rows.len());
+    }
+}
