@@ -2,7 +2,7 @@
 //! its calibration from, out of a calibration file.
 //!
 //! The file is read with the one calibration reader
-//! (`moment_limiter::tools::config_file`: schema version 2 or 1, every key required and
+//! (`moment_limiter::tools::config_file`: schema version 3, 2 or 1, every key required and
 //! bounded); a refused file exits 1 with the reader's message, which names
 //! the key. Then:
 //!
@@ -14,7 +14,7 @@
 //!   `probe-rs download --chip STM32F405RGTx --binary-format bin
 //!   --base-address 0x08080000 OUT.bin`. It replaces the whole range: the
 //!   fault latch and the boot counter start afresh (a service action).
-//! - `--blob`: `OUT.bin` is the 76-byte blob alone (format 2).
+//! - `--blob`: `OUT.bin` is the 84-byte blob alone (format 3).
 //!
 //! Exit codes: 0 written, 1 refused file or usage or I/O error.
 

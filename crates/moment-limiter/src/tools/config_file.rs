@@ -233,13 +233,19 @@ impl fmt::Display for CalibrationFileError {
             E::NotANumber(k) => write!(f, "key `{k}` must be a number"),
             E::OutOfBounds { spec, value } => write!(
                 f,
-                "key `{}` = {value} is outside {} ... {} {} ({})",
-                spec.key, spec.min, spec.max, spec.unit, spec.why
+                "key `{}` = {} is outside {} ... {} {} ({})",
+                spec.key,
+                Shown(*value),
+                spec.min,
+                spec.max,
+                spec.unit,
+                spec.why
             ),
             E::UnsupportedVersion(v) => write!(
                 f,
-                "key `{VERSION_KEY}` = {v}: this reader knows versions \
-                 {CALIBRATION_VERSION_1}, {CALIBRATION_VERSION_2} and {CALIBRATION_VERSION}"
+                "key `{VERSION_KEY}` = {}: this reader knows versions \
+                 {CALIBRATION_VERSION_1}, {CALIBRATION_VERSION_2} and {CALIBRATION_VERSION}",
+                Shown(*v)
             ),
             E::PreSchemaFile => write!(
                 f,
@@ -248,6 +254,21 @@ impl fmt::Display for CalibrationFileError {
                  add \"{VERSION_KEY}\": {CALIBRATION_VERSION_1} and remove the keys the schema \
                  does not have"
             ),
+        }
+    }
+}
+
+/// A value as an error message shows it: as written where that is short,
+/// in exponent form far from 1 (`1e308`, not its 309 digits).
+struct Shown(f64);
+
+impl fmt::Display for Shown {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let a = self.0.abs();
+        if a == 0.0 || !a.is_finite() || (1e-4..1e9).contains(&a) {
+            write!(f, "{}", self.0)
+        } else {
+            write!(f, "{:e}", self.0)
         }
     }
 }
@@ -790,6 +811,13 @@ pub mod hostile {
             with("p1_offset_bar", Some("50")),
             "key `p1_offset_bar` = 50 is outside -4 ... 4 bar (2 % of the 200 bar transducer span)",
         ));
+        // Shown in exponent form, not as the 309 digits of 1e308.
+        cases.push((
+            "angle_sensor_lag_s = 1e308".into(),
+            with("angle_sensor_lag_s", Some("1e308")),
+            "key `angle_sensor_lag_s` = 1e308 is outside 0 ... 0.5 s",
+        ));
+        cases.push(("version = 1e300".into(), with("version", Some("1e300")), "key `version` = 1e300: this reader"));
         cases
     }
 
