@@ -145,6 +145,40 @@ fn refuses_swapped_pressures_a_load_and_a_missing_direction() {
     let err = text(&out.stderr);
     assert!(err.contains("empty hook") && err.contains("kg on the hook"), "{err}");
 
+    // Only one run loaded (800 kg on the down run, the up run empty):
+    // together the runs read a load and an offset neither has, which the
+    // check above passed, and the fit took down friction 0 for 8 kN. Each
+    // run's own reading at rest is named.
+    let out = calibrate(&[&up, &loaded[1]], &cal);
+    assert_eq!(out.status.code(), Some(1));
+    let err = text(&out.stderr);
+    assert!(err.contains("disagree at rest"), "{err}");
+    let alone = |log: &Path| -> f64 {
+        let name = log.display().to_string();
+        let at = err.find(&name).unwrap_or_else(|| panic!("{name} not named: {err}"));
+        let tail = &err[at..];
+        let kg = tail.find("(about ").unwrap_or_else(|| panic!("no weight after {name}: {err}")) + 7;
+        tail[kg..].split(' ').next().and_then(|v| v.parse().ok()).unwrap_or_else(|| panic!("no weight after {name}: {err}"))
+    };
+    let (empty_kg, loaded_kg) = (alone(&up), alone(&loaded[1]));
+    assert!(empty_kg.abs() < 100.0 && (loaded_kg - 800.0).abs() < 100.0, "up {empty_kg} kg, loaded down {loaded_kg} kg: {err}");
+
+    // 300 kg on the down run alone: too little at rest for that check, but
+    // lowering reads 3 kN more force than at rest, a friction that helps
+    // the motion; it was learned as a down friction of 0.
+    let light = dir.path().join("light_down.csv");
+    let out = bin()
+        .args(["synth", "--load-kg", "300", "--duration", "10", "--rate-hz", "100", "--hold-s", "1", "--direction", "down", "--seed", "2", "--out"])
+        .arg(&light)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    rewrite_rows(&light, &light, |_, l, f| if f.len() == 5 { format!("{},0", f[..4].join(",")) } else { l.to_string() });
+    let out = calibrate(&[&up, &light], &cal);
+    assert_eq!(out.status.code(), Some(1));
+    let err = text(&out.stderr);
+    assert!(err.contains("lowering, the unloaded runs read") && err.contains("a load on the hook in the lowering run"), "{err}");
+
     // Only the up run: too little motion down.
     let out = calibrate(&[&up], &cal);
     assert_eq!(out.status.code(), Some(1));

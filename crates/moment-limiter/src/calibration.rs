@@ -280,6 +280,10 @@ pub struct DirectionFit<T> {
     pub b_se: T,
     /// Root mean square of the fit's residuals (N).
     pub rms_n: T,
+    /// Mean friction over the samples as measured, a + b·F before `a` is
+    /// clamped at 0 (N): below zero the force read as if the seals helped
+    /// the motion, which no friction does.
+    pub mean_friction_n: T,
     /// Samples.
     pub n: u32,
     /// Mean and standard deviation of the piston force over the samples (N).
@@ -332,6 +336,7 @@ fn fit_direction<T: Real>(m: &Moments<T>, s: T, offset: T) -> DirectionFit<T> {
         raw_b,
         b_se,
         rms_n: (ssr / n).sqrt(),
+        mean_friction_n: mean_z,
         n: m.n,
         force_mean_n: m.mean_x,
         force_sd_n: sd,

@@ -30,7 +30,7 @@ use std::io::{BufReader, Write as _};
 use std::path::{Path, PathBuf};
 
 use anyhow::Context as _;
-use moment_limiter::calibration::{CalibrationLearner, SteadyMotion};
+use moment_limiter::calibration::{CalibrationLearner, Learned, SteadyMotion};
 use moment_limiter::cycle::{Limiter, LimiterConfig};
 use moment_limiter::fault::Fault;
 use moment_limiter::io::{Frame, Measurement};
@@ -232,6 +232,71 @@ fn known_loads(args: &CalibrateArgs) -> anyhow::Result<Vec<(f64, PathBuf)>> {
         .collect()
 }
 
+/// The unloaded runs' own readings at rest must agree: a zero offset is the
+/// same in every run of the crane, a load left on the hook is in one run
+/// only. Their mean rest residuals may differ by at most
+/// [`REST_RESIDUAL_LIMIT_N`]. Together the runs cannot show it: an empty up
+/// run and a down run with 800 kg read a load and an offset neither has
+/// (the split above passed them), and the fit learned 5.8 kN of offset, up
+/// friction 6.2 kN for 12 kN and down friction 0 for 8 kN (residual rms
+/// 23 kN), which reads every lowering low.
+fn unloaded_runs_agree_at_rest(runs: &[Run]) -> anyhow::Result<()> {
+    let rests: Vec<(&Run, f64)> = runs
+        .iter()
+        .filter(|r| r.load_kg == 0.0)
+        .filter_map(|r| r.learner.mean_rest_residual_n().map(|n| (r, n)))
+        .collect();
+    let lo = rests.iter().map(|x| x.1).fold(f64::INFINITY, f64::min);
+    let hi = rests.iter().map(|x| x.1).fold(f64::NEG_INFINITY, f64::max);
+    // The same load on every run differs in N between runs that rest at
+    // other angles, but not in kg: that is the check below's, which says so.
+    let kgs: Vec<f64> = rests.iter().filter_map(|(r, _)| r.learner.rest_load_kg()).collect();
+    let kg_lo = kgs.iter().copied().fold(f64::INFINITY, f64::min);
+    let kg_hi = kgs.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let same_load = kgs.len() == rests.len() && kg_hi - kg_lo <= 0.2 * kg_lo.abs().max(kg_hi.abs());
+    if rests.len() < 2 || hi - lo <= REST_RESIDUAL_LIMIT_N || same_load {
+        return Ok(());
+    }
+    let each: Vec<String> = rests
+        .iter()
+        .map(|(r, n)| match r.learner.rest_load_kg() {
+            Some(kg) => format!("{} {:+.1} kN (about {kg:.0} kg)", r.name, n / 1e3),
+            None => format!("{} {:+.1} kN", r.name, n / 1e3),
+        })
+        .collect();
+    anyhow::bail!(
+        "the unloaded runs disagree at rest by {:.1} kN (at most {:.0} kN; a zero offset is the same in every run, a load is not): {}. Calibration needs every run with an empty hook",
+        (hi - lo) / 1e3,
+        REST_RESIDUAL_LIMIT_N / 1e3,
+        each.join(", ")
+    )
+}
+
+/// How far below zero the unloaded runs' mean friction may read in either
+/// direction (N): the force offset is learned within about 0.5 kN, and an
+/// empty crane with no friction at all reads +0.1 kN.
+const NEGATIVE_FRICTION_LIMIT_N: f64 = 2_000.0;
+
+/// Friction opposes the motion: raising, the cylinder reads more force than
+/// the boom at rest needs, lowering less. A mean friction below
+/// −[`NEGATIVE_FRICTION_LIMIT_N`] is no friction. 300 kg on the hook of the
+/// down run alone (the up run empty) reads −3.1 kN lowering; the fit would
+/// clamp it to a friction of 0 where the crane has 7.7 kN, which reads
+/// every lowering low. Lighter loads show as a low friction (100 kg: 4.3 kN
+/// for 7.7 down; on the up run alone 7.2 kN for 12.2 up) that no check here
+/// can tell from a crane's own.
+fn friction_opposes_the_motion(learned: &Learned<f64>) -> anyhow::Result<()> {
+    for (dir, f, reads) in [("raising", &learned.up, "less"), ("lowering", &learned.down, "more")] {
+        anyhow::ensure!(
+            f.mean_friction_n >= -NEGATIVE_FRICTION_LIMIT_N,
+            "{dir}, the unloaded runs read {:.1} kN {reads} force than the boom at rest gives (a friction helping the motion, which no seal does; at most {:.0} kN is noise): a load on the hook in the {dir} run(s), or runs of another crane",
+            -f.mean_friction_n / 1e3,
+            NEGATIVE_FRICTION_LIMIT_N / 1e3
+        );
+    }
+    Ok(())
+}
+
 /// Runs the subcommand; returns the exit code.
 pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
     let known = known_loads(&args)?;
@@ -272,6 +337,7 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
     // tolerance can together be 12 kN off, and such a crane was refused as
     // carrying 330 kg. Rest at one angle alone cannot tell them apart, and
     // the whole rest residual is held to the limit.
+    unloaded_runs_agree_at_rest(&runs)?;
     if let (Some(rest), Some(kg)) = (unloaded.mean_rest_residual_n(), unloaded.rest_load_kg()) {
         match unloaded.rest_split() {
             Some((offset_n, load_kg, per_kg)) => anyhow::ensure!(
@@ -294,6 +360,7 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
         anyhow::anyhow!("{e}; each direction needs at least {min} samples of steady luffing (3 s after the start, ≥ 0.5 °/s)")
     };
     let base = unloaded.fit(min).map_err(too_few)?;
+    friction_opposes_the_motion(&base)?;
     // Each known-load run against the unloaded runs: at rest the seals
     // release and the force is the load's alone; in motion, the unloaded law.
     let mut all = unloaded.clone();
