@@ -237,9 +237,9 @@ fn known_loads(args: &CalibrateArgs) -> anyhow::Result<Vec<(f64, PathBuf)>> {
 /// only. Their mean rest residuals may differ by at most
 /// [`REST_RESIDUAL_LIMIT_N`]. Together the runs cannot show it: an empty up
 /// run and a down run with 800 kg read a load and an offset neither has
-/// (the split above passed them), and the fit learned 5.8 kN of offset, up
-/// friction 6.2 kN for 12 kN and down friction 0 for 8 kN (residual rms
-/// 23 kN), which reads every lowering low.
+/// (the load-or-offset check below passed them), and the fit learned
+/// 5.8 kN of offset, up friction 6.2 kN for 12 kN and down friction 0 for
+/// 8 kN (residual rms 23 kN), which reads every lowering low.
 fn unloaded_runs_agree_at_rest(runs: &[Run]) -> anyhow::Result<()> {
     let rests: Vec<(&Run, f64)> = runs
         .iter()
