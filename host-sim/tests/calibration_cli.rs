@@ -329,6 +329,10 @@ fn refuses_a_known_load_run_that_is_not_of_its_stated_weight() {
     let out = with_known("heavy", &blank);
     assert_eq!(out.status.code(), Some(1));
     assert!(text(&out.stderr).contains("is not a weight in kg"), "{}", text(&out.stderr));
+    // A negative weight is named as such, not taken for an unknown option.
+    let out = with_known("-5", &blank);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(text(&out.stderr).contains("--known-load-kg -5") && text(&out.stderr).contains("must be between 1 and 50000 kg"), "{}", text(&out.stderr));
 }
 
 /// The first-order-equivalent lag a `synth` angle sensor has (s).

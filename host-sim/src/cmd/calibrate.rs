@@ -56,7 +56,7 @@ pub struct CalibrateArgs {
     pub logs: Vec<PathBuf>,
     /// A run with a known test weight on the hook: `--known-load-kg W LOADED.csv`
     /// (repeatable); its steady samples enter the fit at the model's force for W.
-    #[arg(long, num_args = 2, value_names = ["KG", "LOG"], action = clap::ArgAction::Append)]
+    #[arg(long, num_args = 2, value_names = ["KG", "LOG"], action = clap::ArgAction::Append, allow_negative_numbers = true)]
     pub known_load_kg: Vec<String>,
     /// Where to write the calibration (JSON).
     #[arg(long)]
