@@ -1261,6 +1261,96 @@ fn lift_off_in_half_a_second_is_cut_within_1_1_s_f32() {
     lift_off_in_half_a_second_is_cut_within_1_1_s(Precision::F32);
 }
 
+/// A lift-off snatched, the load taken up in 0.3 s, at 10°–80°, every
+/// rope, both friction laws: for 110 % of rated, the time from leaving the
+/// ground to the first cut (OVERLOAD, or FAULT: at 10° the bounce takes p1
+/// past its range and the FAULT cuts at once); for 90 %, the cases with an
+/// OVERLOAD and the highest estimated u. Returns (the longest 110 % delay,
+/// the 90 % cases cut, their highest estimated u, every 110 % case not cut
+/// at all).
+fn snatched_lift_offs(precision: Precision) -> (f64, Vec<String>, f64, Vec<String>) {
+    let (mut worst, mut false_cut, mut peak90, mut uncut) = (0.0f64, Vec::new(), 0.0f64, Vec::new());
+    for angle in [10.0f64, 20.0, 35.0, 65.0, 80.0] {
+        let rated = rated_kg(angle.to_radians());
+        for rope in ROPES {
+            for seals in SEALS {
+                for frac in [0.9, 1.1] {
+                    let sc = Scenario { load_kg: frac * rated, from_deg: angle, to_deg: angle, duration_s: 6.0, ramp_s: 0.0, shape: RampShape::Linear, rope, seals, lift_off_s: Some(0.3), seed: 5 };
+                    let pts = replay(&sc, precision);
+                    let off = HOLD_BEFORE_S + 0.3;
+                    if frac > 1.0 {
+                        match pts.iter().find(|p| p.t >= HOLD_BEFORE_S && p.state.cuts()) {
+                            Some(p) => worst = worst.max(p.t - off),
+                            None => uncut.push(sc.name()),
+                        }
+                    } else {
+                        peak90 = pts.iter().filter(|p| p.u > 0.0).map(|p| p.ratio * p.u).fold(peak90, f64::max);
+                        if let Some((t, _)) = first_overload(&pts) {
+                            false_cut.push(format!("{}: OVERLOAD at {t:.2} s", sc.name()));
+                        }
+                    }
+                }
+            }
+        }
+    }
+    println!("{precision:?}, lift-offs snatched in 0.3 s: 110 % cut at most {worst:.2} s after leaving the ground; 90 % cut in {} cases {false_cut:?}, highest estimated u {peak90:.4}", false_cut.len());
+    (worst, false_cut, peak90, uncut)
+}
+
+/// KNOWN GAP, measured (f64 and f32): snatched in 0.3 s, 110 % is cut
+/// 1.00–1.14 s after it leaves the ground at 20°–80° (at 10° at once, by the
+/// FAULT of p1 past its range), and 90 % on the 3 m rope at 80° is an
+/// OVERLOAD 6 s after it leaves the ground (highest estimated u 1.0004;
+/// 1.0002–1.0035 over seven noise seeds with `crane-sim synth`).
+///
+/// - 110 %: the chain's step response. The 4-stage force filter alone
+///   crosses 0.866 of a step 0.68 s after a 0.3 s ramp ends; the 0.7 Hz
+///   stage against the bounce (`moment_limiter::static_load`, "A still
+///   boom") adds 0.31 s, the 50 ms debounce the rest. Without that stage a
+///   1.7 Hz bounce of ±68 % reads 90 % as an OVERLOAD, so a snatch seen
+///   within 1 s and a bounce of unknown frequency not read as load meet
+///   here.
+/// - 90 % at 80° on the 3 m rope: taking the load up bends the boom and
+///   moves its tip out faster than the load can follow (`crane-sim
+///   simulate --from-deg 80 --lift-off-s 0.3 --load-kg 9000 --rope held
+///   --rope-length-m 3`: the tip's deflection grows by 4.6 cm); the load
+///   then swings by ±0.8°, and at 80° (tan θ = 5.7) its outward crest pulls
+///   8 % more. The boom angle never
+///   moved, so no rope of the bank swings, they agree, and the crest is
+///   read as load and held by the averages. What would close it: driving
+///   the rope pendulums with the tip's give as the load changes at rest
+///   (only the rope that follows it would then read flat; the 110 % cut
+///   would not come sooner, as the lowest rope reads the inward half
+///   swing).
+#[test]
+#[ignore = "KNOWN GAP: snatched in 0.3 s, 110 % is cut 1.00-1.14 s after it leaves the ground; 90 % on a 3 m rope at 80 deg is an OVERLOAD (the swing the boom's give starts)"]
+fn lift_off_snatched_in_0_3_s_known_gap() {
+    let (worst, false_cut, _, uncut) = snatched_lift_offs(Precision::F64);
+    assert!(worst <= 1.0 && false_cut.is_empty() && uncut.is_empty(), "110 % cut {worst:.2} s after; 90 % cut: {false_cut:#?}; 110 % never cut: {uncut:#?}");
+}
+
+/// The known gap above pinned at its measured size: snatched in 0.3 s,
+/// 110 % is cut within 1.15 s of leaving the ground (measured 1.14 s), 90 %
+/// is an OVERLOAD only on the 3 m rope at 80° and reads at most u 1.005
+/// (measured 1.0004).
+fn lift_off_snatched_in_0_3_s_stays_as_measured(precision: Precision) {
+    let (worst, false_cut, peak90, uncut) = snatched_lift_offs(precision);
+    assert!(uncut.is_empty(), "110 % never cut: {uncut:#?}");
+    assert!(worst <= 1.15, "110 % cut {worst:.2} s after it leaves the ground");
+    assert!(false_cut.iter().all(|f| f.starts_with("80->80") && f.contains("Held(0.0)")), "{false_cut:#?}");
+    assert!(peak90 <= 1.005, "90 % read as u {peak90:.4}");
+}
+
+#[test]
+fn lift_off_snatched_in_0_3_s_stays_as_measured_f64() {
+    lift_off_snatched_in_0_3_s_stays_as_measured(Precision::F64);
+}
+
+#[test]
+fn lift_off_snatched_in_0_3_s_stays_as_measured_f32() {
+    lift_off_snatched_in_0_3_s_stays_as_measured(Precision::F32);
+}
+
 #[test]
 fn lift_off_f64() {
     lift_off(Precision::F64, &SEALS);
