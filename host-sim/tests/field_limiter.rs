@@ -1225,14 +1225,16 @@ fn lift_off_at_other_angles() {
     assert!(failures.is_empty(), "{failures:#?}");
 }
 
-/// KNOWN GAP, measured (f64): taken up in 0.5 s, 110 % on the 3 m held
-/// rope at 65° and 80° is cut 1.02–1.06 s after it leaves the ground (the
-/// other 36 cases of 110 % within 1 s, 90 % never). The boom bends under
-/// the load as it is taken up, its tip moves, and a 3 m rope at a steep
-/// boom swings inward by up to 0.9° (tan 80° · tan 0.9° = 9 % less pull)
-/// without the boom angle showing any motion, so no rope of the bank
-/// predicts it. What would close it: driving the rope pendulums with the
-/// tip's motion the model gives for the load's change.
+/// KNOWN GAP, measured (f64): taken up in 0.5 s, 110 % on the 3 m held rope
+/// at 65° and 80° is cut 1.02–1.06 s after it leaves the ground (the other
+/// 36 cases of 110 % within 1 s, 90 % never at this noise draw; over 16
+/// draws 90 % on the 3 m rope at 80° is an OVERLOAD in 8:
+/// [`ninety_percent_lifted_fast_on_a_3_m_rope_at_80_degrees_known_gap`]).
+/// The boom bends under the load as it is taken up, its tip moves, and a
+/// 3 m rope at a steep boom swings inward by up to 0.9° (tan 80° · tan
+/// 0.9° = 9 % less pull) without the boom angle showing any motion, so no rope of
+/// the bank predicts it. What would close it: driving the rope pendulums
+/// with the tip's motion the model gives for the load's change.
 #[test]
 #[ignore = "KNOWN GAP: 110 % taken up in 0.5 s on a 3 m rope at 65-80 deg is cut 1.02-1.06 s after it leaves the ground"]
 fn lift_off_in_half_a_second_on_a_short_rope_at_a_steep_boom_known_gap() {
@@ -1301,7 +1303,8 @@ fn snatched_lift_offs(precision: Precision) -> (f64, Vec<String>, f64, Vec<Strin
 /// 1.00–1.14 s after it leaves the ground at 20°–80° (at 10° at once, by the
 /// FAULT of p1 past its range), and 90 % on the 3 m rope at 80° is an
 /// OVERLOAD 6 s after it leaves the ground (highest estimated u 1.0004;
-/// 1.0002–1.0035 over seven noise seeds with `crane-sim synth`).
+/// 1.0004–1.0035 over seven noise seeds with `crane-sim synth`; see also
+/// [`ninety_percent_lifted_fast_on_a_3_m_rope_at_80_degrees_known_gap`]).
 ///
 /// - 110 %: the chain's step response. The 4-stage force filter alone
 ///   crosses 0.866 of a step 0.68 s after a 0.3 s ramp ends; the 0.7 Hz
@@ -1349,6 +1352,65 @@ fn lift_off_snatched_in_0_3_s_stays_as_measured_f64() {
 #[test]
 fn lift_off_snatched_in_0_3_s_stays_as_measured_f32() {
     lift_off_snatched_in_0_3_s_stays_as_measured(Precision::F32);
+}
+
+/// 90 % of rated lifted on the 3 m held rope at 80° (where the swing that
+/// the boom's give starts pulls most, see
+/// [`lift_off_snatched_in_0_3_s_known_gap`]), taken up in `take_up` s,
+/// both friction laws, noise seeds 1–8: the OVERLOADs and the highest
+/// estimated u.
+fn ninety_percent_on_a_3_m_rope_at_80_degrees(precision: Precision, take_up: f64) -> (usize, f64) {
+    let rated = rated_kg(80f64.to_radians());
+    let (mut cut, mut peak) = (0usize, 0.0f64);
+    for seals in SEALS {
+        for seed in 1..=8 {
+            let sc = Scenario { load_kg: 0.9 * rated, from_deg: 80.0, to_deg: 80.0, duration_s: 8.0, ramp_s: 0.0, shape: RampShape::Linear, rope: Rope::Held(0.0), seals, lift_off_s: Some(take_up), seed };
+            let pts = replay(&sc, precision);
+            peak = pts.iter().filter(|p| p.u > 0.0).map(|p| p.ratio * p.u).fold(peak, f64::max);
+            cut += usize::from(first_overload(&pts).is_some());
+        }
+    }
+    println!("{precision:?}, 90 % on the 3 m rope at 80 deg taken up in {take_up} s: {cut} of 16 an OVERLOAD, highest estimated u {peak:.4}");
+    (cut, peak)
+}
+
+/// KNOWN GAP, measured (f64 and f32 alike): over 16 noise draws, 90 %
+/// lifted on the 3 m rope at 80° is an OVERLOAD in all 16 when snatched in
+/// 0.3 s (highest estimated u 1.0035) and in 8 when taken up in 0.5 s
+/// (1.0028); in 1 s in none, but with little margin (0.9958); in 2 s
+/// 0.9770. The noise draw of the lift-off tests above happens to pass at
+/// 0.5 s (0.9982).
+#[test]
+#[ignore = "KNOWN GAP: 90 % lifted on a 3 m rope at 80 deg in 0.5 s or less is an OVERLOAD on most noise draws (the swing the boom's give starts)"]
+fn ninety_percent_lifted_fast_on_a_3_m_rope_at_80_degrees_known_gap() {
+    for take_up in [0.3, 0.5] {
+        let (cut, peak) = ninety_percent_on_a_3_m_rope_at_80_degrees(Precision::F64, take_up);
+        assert_eq!(cut, 0, "taken up in {take_up} s: {cut} OVERLOADs, highest u {peak:.4}");
+    }
+}
+
+/// Pinned at its measured size: in 0.3 s and 0.5 s read at most as u 1.005
+/// (measured 1.0035 and 1.0028); in 1 s and 2 s no OVERLOAD (the issue's
+/// goal).
+fn ninety_percent_lifted_on_a_3_m_rope_at_80_degrees_stays_as_measured(precision: Precision) {
+    for take_up in [0.3, 0.5] {
+        let (_, peak) = ninety_percent_on_a_3_m_rope_at_80_degrees(precision, take_up);
+        assert!(peak <= 1.005, "taken up in {take_up} s: highest u {peak:.4}");
+    }
+    for take_up in [1.0, 2.0] {
+        let (cut, peak) = ninety_percent_on_a_3_m_rope_at_80_degrees(precision, take_up);
+        assert_eq!(cut, 0, "taken up in {take_up} s: {cut} OVERLOADs, highest u {peak:.4}");
+    }
+}
+
+#[test]
+fn ninety_percent_lifted_on_a_3_m_rope_at_80_degrees_stays_as_measured_f64() {
+    ninety_percent_lifted_on_a_3_m_rope_at_80_degrees_stays_as_measured(Precision::F64);
+}
+
+#[test]
+fn ninety_percent_lifted_on_a_3_m_rope_at_80_degrees_stays_as_measured_f32() {
+    ninety_percent_lifted_on_a_3_m_rope_at_80_degrees_stays_as_measured(Precision::F32);
 }
 
 #[test]
