@@ -1218,7 +1218,7 @@ fn lift_offs_over(precision: Precision, angles: &[f64], take_ups: &[f64]) -> (Ve
 
 /// Lift-offs at 10°, 20°, 35°, 65° and 80°, taken up in 1 s and 2 s: 90 %
 /// never cut, 110 % within 1 s of leaving the ground (measured, f64: at
-/// most 0.86 s).
+/// most 0.84 s; 0.86 s before the rope bank followed the tip's give).
 #[test]
 fn lift_off_at_other_angles() {
     let (failures, _) = lift_offs_over(Precision::F64, &[10.0, 20.0, 35.0, 65.0, 80.0], &[1.0, 2.0]);
@@ -1226,17 +1226,16 @@ fn lift_off_at_other_angles() {
 }
 
 /// KNOWN GAP, measured (f64): taken up in 0.5 s, 110 % on the 3 m held rope
-/// at 65° and 80° is cut 1.02–1.06 s after it leaves the ground (the other
-/// 36 cases of 110 % within 1 s, 90 % never at this noise draw; over 16
-/// draws 90 % on the 3 m rope at 80° is an OVERLOAD in 8:
-/// [`ninety_percent_lifted_fast_on_a_3_m_rope_at_80_degrees_known_gap`]).
-/// The boom bends under the load as it is taken up, its tip moves, and a
-/// 3 m rope at a steep boom swings inward by up to 0.9° (tan 80° · tan
-/// 0.9° = 9 % less pull) without the boom angle showing any motion, so no rope of
-/// the bank predicts it. What would close it: driving the rope pendulums
-/// with the tip's motion the model gives for the load's change.
+/// at 80° is cut 1.03 s after it leaves the ground (the other 38 cases of
+/// 110 % within 1 s, 90 % never). The boom bends under the load as it is
+/// taken up, its tip moves out, and a 3 m rope at a steep boom is left
+/// swinging inward by up to 0.9° (tan 80° · tan 0.9° = 9 % less pull). The
+/// rope bank follows that swing now (`moment_limiter::static_load`, "A
+/// lift-off: the boom's give swings the load"), which took 65° within 1 s
+/// and 80° from 1.05 s to 1.03 s; but the bank reads the lowest rope, and
+/// in the inward half swing that is the least inward, the longest.
 #[test]
-#[ignore = "KNOWN GAP: 110 % taken up in 0.5 s on a 3 m rope at 65-80 deg is cut 1.02-1.06 s after it leaves the ground"]
+#[ignore = "KNOWN GAP: 110 % taken up in 0.5 s on a 3 m rope at 80 deg is cut 1.03 s after it leaves the ground"]
 fn lift_off_in_half_a_second_on_a_short_rope_at_a_steep_boom_known_gap() {
     let (failures, _) = lift_offs_over(Precision::F64, &[10.0, 20.0, 35.0, 65.0, 80.0], &[0.5]);
     assert!(failures.is_empty(), "{failures:#?}");
@@ -1244,7 +1243,7 @@ fn lift_off_in_half_a_second_on_a_short_rope_at_a_steep_boom_known_gap() {
 
 /// The known gap above pinned at its measured size: taken up in 0.5 s, 90 %
 /// is never an OVERLOAD and 110 % is cut within 1.10 s of leaving the
-/// ground (measured, f64 and f32: at most 1.05 s, the 3 m rope at 80°), so
+/// ground (measured, f64 and f32: at most 1.03 s, the 3 m rope at 80°), so
 /// that the gap cannot widen unseen.
 fn lift_off_in_half_a_second_is_cut_within_1_1_s(precision: Precision) {
     let (failures, worst) = lift_offs_over(precision, &[10.0, 20.0, 35.0, 65.0, 80.0], &[0.5]);
@@ -1282,7 +1281,10 @@ fn snatched_lift_offs(precision: Precision) -> (f64, Vec<String>, f64, Vec<Strin
                     let off = HOLD_BEFORE_S + 0.3;
                     if frac > 1.0 {
                         match pts.iter().find(|p| p.t >= HOLD_BEFORE_S && p.state.cuts()) {
-                            Some(p) => worst = worst.max(p.t - off),
+                            Some(p) => {
+                                println!("{:<60} cut ({:?}) {:+.2} s from leaving the ground", sc.name(), p.state, p.t - off);
+                                worst = worst.max(p.t - off);
+                            }
                             None => uncut.push(sc.name()),
                         }
                     } else {
@@ -1300,48 +1302,41 @@ fn snatched_lift_offs(precision: Precision) -> (f64, Vec<String>, f64, Vec<Strin
 }
 
 /// KNOWN GAP, measured (f64 and f32): snatched in 0.3 s, 110 % is cut
-/// 1.00–1.14 s after it leaves the ground at 20°–80° (at 10° at once, by the
-/// FAULT of p1 past its range), and 90 % on the 3 m rope at 80° is an
-/// OVERLOAD 6 s after it leaves the ground (highest estimated u 1.0004;
-/// 1.0004–1.0035 over seven noise seeds with `crane-sim synth`; see also
-/// [`ninety_percent_lifted_fast_on_a_3_m_rope_at_80_degrees_known_gap`]).
+/// 0.99–1.12 s after it leaves the ground at 20°–80° (at 10° at once, by
+/// the FAULT of p1 past its range), not within 1 s; the 3 m rope at 80° is
+/// the slowest. The chain's step response sets it. The 4-stage force filter
+/// alone crosses 0.866 of a step 0.68 s after a 0.3 s ramp ends; the
+/// 0.7 Hz stage against the bounce (`moment_limiter::static_load`, "A
+/// still boom") adds 0.31 s, the 50 ms debounce the rest. Without that
+/// stage a 1.7 Hz bounce of ±68 % reads 90 % as an OVERLOAD, so a snatch
+/// seen within 1 s and a bounce of unknown frequency not read as load meet
+/// here.
 ///
-/// - 110 %: the chain's step response. The 4-stage force filter alone
-///   crosses 0.866 of a step 0.68 s after a 0.3 s ramp ends; the 0.7 Hz
-///   stage against the bounce (`moment_limiter::static_load`, "A still
-///   boom") adds 0.31 s, the 50 ms debounce the rest. Without that stage a
-///   1.7 Hz bounce of ±68 % reads 90 % as an OVERLOAD, so a snatch seen
-///   within 1 s and a bounce of unknown frequency not read as load meet
-///   here.
-/// - 90 % at 80° on the 3 m rope: taking the load up bends the boom and
-///   moves its tip out faster than the load can follow (`crane-sim
-///   simulate --from-deg 80 --lift-off-s 0.3 --load-kg 9000 --rope held
-///   --rope-length-m 3`: the tip's deflection grows by 4.6 cm); the load
-///   then swings by ±0.8°, and at 80° (tan θ = 5.7) its outward crest pulls
-///   8 % more. The boom angle never
-///   moved, so no rope of the bank swings, they agree, and the crest is
-///   read as load and held by the averages. What would close it: driving
-///   the rope pendulums with the tip's give as the load changes at rest
-///   (only the rope that follows it would then read flat; the 110 % cut
-///   would not come sooner, as the lowest rope reads the inward half
-///   swing).
+/// 90 % is never an OVERLOAD (highest estimated u 0.970). Before the rope
+/// bank followed the tip's give in a lift-off (`moment_limiter::static_load`,
+/// "A lift-off: the boom's give swings the load"), 90 % on the 3 m rope at
+/// 80° was: the swing the snatch starts (the tip's deflection grows by
+/// 4.6 cm, `crane-sim simulate --from-deg 80 --lift-off-s 0.3 --load-kg
+/// 9000 --rope held --rope-length-m 3`, and the load swings ±0.8°) pulls
+/// 8 % more at its outward crest at tan 80° = 5.7, and no rope of the bank
+/// swung with it (highest u 1.0004 here; 1.0004–1.0035 over seven noise
+/// seeds with `crane-sim synth`). And 110 % was cut up to 1.14 s after.
 #[test]
-#[ignore = "KNOWN GAP: snatched in 0.3 s, 110 % is cut 1.00-1.14 s after it leaves the ground; 90 % on a 3 m rope at 80 deg is an OVERLOAD (the swing the boom's give starts)"]
+#[ignore = "KNOWN GAP: snatched in 0.3 s, 110 % is cut 0.99-1.12 s after it leaves the ground at 20-80 deg"]
 fn lift_off_snatched_in_0_3_s_known_gap() {
     let (worst, false_cut, _, uncut) = snatched_lift_offs(Precision::F64);
     assert!(worst <= 1.0 && false_cut.is_empty() && uncut.is_empty(), "110 % cut {worst:.2} s after; 90 % cut: {false_cut:#?}; 110 % never cut: {uncut:#?}");
 }
 
 /// The known gap above pinned at its measured size: snatched in 0.3 s,
-/// 110 % is cut within 1.15 s of leaving the ground (measured 1.14 s), 90 %
-/// is an OVERLOAD only on the 3 m rope at 80° and reads at most u 1.005
-/// (measured 1.0004).
+/// 110 % is cut within 1.13 s of leaving the ground (measured 1.12 s), and
+/// 90 % is never an OVERLOAD and reads at most u 0.98 (measured 0.970).
 fn lift_off_snatched_in_0_3_s_stays_as_measured(precision: Precision) {
     let (worst, false_cut, peak90, uncut) = snatched_lift_offs(precision);
     assert!(uncut.is_empty(), "110 % never cut: {uncut:#?}");
-    assert!(worst <= 1.15, "110 % cut {worst:.2} s after it leaves the ground");
-    assert!(false_cut.iter().all(|f| f.starts_with("80->80") && f.contains("Held(0.0)")), "{false_cut:#?}");
-    assert!(peak90 <= 1.005, "90 % read as u {peak90:.4}");
+    assert!(worst <= 1.13, "110 % cut {worst:.2} s after it leaves the ground");
+    assert!(false_cut.is_empty(), "{false_cut:#?}");
+    assert!(peak90 <= 0.98, "90 % read as u {peak90:.4}");
 }
 
 #[test]
@@ -1374,43 +1369,28 @@ fn ninety_percent_on_a_3_m_rope_at_80_degrees(precision: Precision, take_up: f64
     (cut, peak)
 }
 
-/// KNOWN GAP, measured (f64 and f32 alike): over 16 noise draws, 90 %
-/// lifted on the 3 m rope at 80° is an OVERLOAD in all 16 when snatched in
-/// 0.3 s (highest estimated u 1.0035) and in 8 when taken up in 0.5 s
-/// (1.0028); in 1 s in none, but with little margin (0.9958); in 2 s
-/// 0.9770. The noise draw of the lift-off tests above happens to pass at
-/// 0.5 s (0.9982).
-#[test]
-#[ignore = "KNOWN GAP: 90 % lifted on a 3 m rope at 80 deg in 0.5 s or less is an OVERLOAD on most noise draws (the swing the boom's give starts)"]
-fn ninety_percent_lifted_fast_on_a_3_m_rope_at_80_degrees_known_gap() {
-    for take_up in [0.3, 0.5] {
-        let (cut, peak) = ninety_percent_on_a_3_m_rope_at_80_degrees(Precision::F64, take_up);
-        assert_eq!(cut, 0, "taken up in {take_up} s: {cut} OVERLOADs, highest u {peak:.4}");
-    }
-}
-
-/// Pinned at its measured size: in 0.3 s and 0.5 s read at most as u 1.005
-/// (measured 1.0035 and 1.0028); in 1 s and 2 s no OVERLOAD (the issue's
-/// goal).
-fn ninety_percent_lifted_on_a_3_m_rope_at_80_degrees_stays_as_measured(precision: Precision) {
-    for take_up in [0.3, 0.5] {
-        let (_, peak) = ninety_percent_on_a_3_m_rope_at_80_degrees(precision, take_up);
-        assert!(peak <= 1.005, "taken up in {take_up} s: highest u {peak:.4}");
-    }
-    for take_up in [1.0, 2.0] {
+/// 90 % lifted on the 3 m rope at 80°, over 16 noise draws and take-ups of
+/// 0.3 s to 2 s, is never an OVERLOAD and reads at most u 0.96 (measured,
+/// f64 and f32 alike: 0.9486 in 0.3 s, 0.9485 in 0.5 s, 0.9481 in 1 s,
+/// 0.9404 in 2 s; the ×1.05 reading of 90 % is 0.945). Before the rope bank
+/// followed the tip's give in a lift-off, the swing the take-up starts read
+/// as load at its outward crest: an OVERLOAD in all 16 draws taken up in
+/// 0.3 s (highest u 1.0035), in 8 in 0.5 s (1.0028), and 0.9958 in 1 s.
+fn ninety_percent_lifted_on_a_3_m_rope_at_80_degrees_is_no_overload(precision: Precision) {
+    for take_up in [0.3, 0.5, 1.0, 2.0] {
         let (cut, peak) = ninety_percent_on_a_3_m_rope_at_80_degrees(precision, take_up);
-        assert_eq!(cut, 0, "taken up in {take_up} s: {cut} OVERLOADs, highest u {peak:.4}");
+        assert!(cut == 0 && peak <= 0.96, "taken up in {take_up} s: {cut} OVERLOADs, highest u {peak:.4}");
     }
 }
 
 #[test]
-fn ninety_percent_lifted_on_a_3_m_rope_at_80_degrees_stays_as_measured_f64() {
-    ninety_percent_lifted_on_a_3_m_rope_at_80_degrees_stays_as_measured(Precision::F64);
+fn ninety_percent_lifted_on_a_3_m_rope_at_80_degrees_is_no_overload_f64() {
+    ninety_percent_lifted_on_a_3_m_rope_at_80_degrees_is_no_overload(Precision::F64);
 }
 
 #[test]
-fn ninety_percent_lifted_on_a_3_m_rope_at_80_degrees_stays_as_measured_f32() {
-    ninety_percent_lifted_on_a_3_m_rope_at_80_degrees_stays_as_measured(Precision::F32);
+fn ninety_percent_lifted_on_a_3_m_rope_at_80_degrees_is_no_overload_f32() {
+    ninety_percent_lifted_on_a_3_m_rope_at_80_degrees_is_no_overload(Precision::F32);
 }
 
 #[test]
@@ -1560,15 +1540,17 @@ fn lift_off_against_an_ideal_bounce_f32() {
 
 /// The same taken up in 0.5 s and 0.3 s, where the filters that keep a
 /// 1 Hz bounce out cannot also tell 90 % from 110 % within a second. A
-/// bounce of 1 Hz reads 90 % as an OVERLOAD: peak estimated u 1.006–1.044
-/// taken up in 0.5 s, 1.027–1.076 in 0.3 s (its first crest pulls up to
-/// twice the load, and the filters pass a fifth of 1 Hz). At 1.5–2 Hz, 110 %
-/// taken up in 0.3 s is cut 0.99–1.09 s after it leaves the ground (0.93–0.96
-/// s in 0.5 s). In the asserted cases (`lift_off_against_an_ideal_bounce_*`,
-/// 0.8 s and slower) 90 % reads at most 0.983 and 110 % is cut within
-/// 0.84 s.
+/// bounce of 1 Hz reads 90 % as an OVERLOAD in 8 of its 12 cases (peak
+/// estimated u up to 1.038 taken up in 0.5 s, 1.071 in 0.3 s: its first
+/// crest pulls up to twice the load, and the filters pass a fifth of
+/// 1 Hz); all 12 were before the rope bank followed the tip's give in a
+/// lift-off, whose swing, which this world's force does not have, now
+/// lowers the lowest rope's reading. At 1.5–2 Hz, 110 % taken up in 0.3 s is
+/// cut 0.97–1.08 s after it leaves the ground (0.90–0.96 s in 0.5 s). In
+/// the asserted cases (`lift_off_against_an_ideal_bounce_*`, 0.8 s and
+/// slower) 90 % reads at most 0.977 and 110 % is cut within 0.84 s.
 #[test]
-#[ignore = "KNOWN GAP: a lift-off snatched in 0.5 s or less against a bounce of 1-2 Hz: 90 % cuts (1 Hz) or, in 0.3 s, 110 % is cut up to 1.09 s after leaving the ground (1.5-2 Hz)"]
+#[ignore = "KNOWN GAP: a lift-off snatched in 0.5 s or less against a bounce of 1-2 Hz: 90 % cuts (1 Hz) or, in 0.3 s, 110 % is cut up to 1.08 s after leaving the ground (1.5-2 Hz)"]
 fn lift_off_snatched_against_an_ideal_bounce_known_gap() {
     let (failures, _) = lift_off_against_an_ideal_bounce(Precision::F64, &[0.3, 0.5]);
     assert!(failures.is_empty(), "{failures:#?}");
@@ -1576,7 +1558,7 @@ fn lift_off_snatched_against_an_ideal_bounce_known_gap() {
 
 /// The known gap above pinned at its measured size: snatched in 0.3 s or
 /// 0.5 s against an ideal bounce of 1–2 Hz, 110 % is cut within 1.15 s of
-/// leaving the ground (measured, f64: at most 1.09 s), and 90 % is an
+/// leaving the ground (measured, f64: at most 1.08 s), and 90 % is an
 /// OVERLOAD only behind the 1 Hz bounce (the gap's other half).
 #[test]
 fn lift_off_snatched_against_an_ideal_bounce_is_cut_within_1_15_s() {

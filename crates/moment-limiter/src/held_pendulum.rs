@@ -248,6 +248,19 @@ impl<T: Real, const N: usize> HeldRopes<T, N> {
         self.give_m
     }
 
+    /// The tip moved out by `dx_m` (m) faster than the loads follow: each
+    /// load keeps its place and its velocity, so each rope turns in by
+    /// dx/(l + give) (small angles: a give of centimetres on ropes of
+    /// metres). Call before [`Self::update`], which sets the factors anew.
+    pub fn shift_tip(&mut self, dx_m: T) {
+        let give = self.give_m;
+        let lanes = self.phi.iter_mut().zip(self.sin_phi.iter_mut()).zip(self.cos_phi.iter_mut());
+        for (((phi, s), c), &l) in lanes.zip(self.length_m.iter()) {
+            *phi -= dx_m / (l + give);
+            (*s, *c) = phi.sin_cos_own();
+        }
+    }
+
     /// The hanging length of rope `i` (m); `None` past the last rope.
     pub fn length_m(&self, i: usize) -> Option<T> {
         self.length_m.get(i).copied()
@@ -360,6 +373,12 @@ impl<T: Real> PaidOutRope<T> {
     /// The factor of the rope's pull on the cylinder now.
     pub fn factor(&self) -> T {
         self.factor
+    }
+
+    /// [`HeldRopes::shift_tip`] for this rope, `length_m` long (m, > 0).
+    pub fn shift_tip(&mut self, dx_m: T, length_m: T) {
+        self.phi -= dx_m / length_m;
+        (self.sin_phi, self.cos_phi) = self.phi.sin_cos_own();
     }
 
     /// The factor of the rope's pull with a sensor lag of `lead_s` (s)
@@ -541,6 +560,39 @@ mod tests {
             given.set_give(bad);
             assert_eq!(given.give_m, 0.0, "{bad}");
         }
+    }
+
+    #[test]
+    fn a_tip_moved_out_swings_the_load_by_as_much_as_it_cannot_follow() {
+        // The tip moved out by 4.55 cm on a 3 m rope, as a ramp of `ramp_s`
+        // in 10 ms steps at a still boom: the load keeps its place, so the
+        // swing left is that of a pendulum whose support moved by a ramp,
+        // (dx/l)·|sin(ωT/2)/(ωT/2)|, all of it for a step (ω = √(g/l)).
+        let (l, dx, dt) = (3.0_f64, 0.0455, 0.01);
+        let w = (9.81 / l).sqrt();
+        for ramp_s in [0.0, 0.3, 1.0, 2.0] {
+            let mut p = HeldRopes::new([l], 9.81);
+            let still = BoomTip::new((0.0, 1.0), 19.5, 0.0, 0.0, dt);
+            let steps = ((ramp_s / dt) as usize).max(1);
+            let mut amplitude = 0.0f64;
+            for k in 0..steps + 800 {
+                if k < steps {
+                    p.shift_tip(dx / steps as f64);
+                    assert_eq!(p.sin_phi[0], p.phi[0].sin_cos_own().0, "kept with φ");
+                }
+                p.update(&still);
+                if k >= steps {
+                    amplitude = amplitude.max(p.phi[0].abs());
+                }
+            }
+            let x = w * ramp_s / 2.0;
+            let expect = dx / l * if x > 0.0 { (x.sin() / x).abs() } else { 1.0 };
+            assert!((amplitude / expect - 1.0).abs() < 0.02, "ramp {ramp_s} s: {amplitude} vs {expect}");
+        }
+        // Turned in, as the tip moved out: φ < 0 just after a step.
+        let mut p = HeldRopes::new([l], 9.81);
+        p.shift_tip(dx);
+        assert!((p.phi[0] + dx / l).abs() < 1e-15 && p.phi_dot[0] == 0.0);
     }
 
     #[test]

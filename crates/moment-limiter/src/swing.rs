@@ -105,6 +105,22 @@ impl<T: Real> SwingGeometry<T> {
         }
     }
 
+    /// How far out the tip moves when a hook load of `load_kg` hangs from
+    /// it at a boom angle θ of (sin θ, cos θ) = `(sin_angle, cos_angle)` (m):
+    /// c·g·W·cos θ·sin θ, the load's pull across the boom (g·W·cos θ) on the
+    /// tip's compliance c across it, of which the horizontal part is sin θ
+    /// (see [`crate::static_load`], "A lift-off: the boom's give swings the
+    /// load"). No load or a non-finite one moves nothing; at most
+    /// [`MAX_GIVE_M`].
+    pub fn tip_shift_m(&self, (sin_angle, cos_angle): (T, T), load_kg: T) -> T {
+        let shift = self.tip_compliance_m_per_n * sin_angle * cos_angle * self.gravity_m_s2 * load_kg;
+        if shift.is_finite() && shift > T::lit(0.0) {
+            shift.min(T::lit(MAX_GIVE_M))
+        } else {
+            T::lit(0.0)
+        }
+    }
+
     /// The paid-out rope's hanging length at boom angle `angle_rad` (m):
     /// the tip's height less the clearance, at least 0.5 m.
     pub fn paid_out_length_m(&self, angle_rad: T) -> T {
@@ -129,5 +145,26 @@ mod tests {
             assert_eq!(give(70.0, bad), 0.0, "{bad}");
         }
         assert_eq!(give(80.0, 1.0e6), MAX_GIVE_M);
+    }
+
+    #[test]
+    fn the_tip_moves_out_under_a_load_by_the_same_compliance() {
+        let g = SwingGeometry::<f64>::coles_930();
+        let shift = |deg: f64, kg: f64| g.tip_shift_m(deg.to_radians().sin_cos(), kg);
+        // 9 t at 80°: 3.01e-6 m/N × 9.81 × sin 80° cos 80° × 9000 = 4.55 cm;
+        // the simulator's tip deflection grows by 4.6 cm (`crane-sim simulate
+        // --from-deg 80 --lift-off-s 0.3 --load-kg 9000 --rope held
+        // --rope-length-m 3`, node 13).
+        assert!((shift(80.0, 9_000.0) - 0.0455).abs() < 0.0005, "{}", shift(80.0, 9_000.0));
+        // One compliance across the boom: a horizontal pull's give is the
+        // vertical load's shift times tan θ.
+        for deg in [20.0f64, 45.0, 70.0] {
+            let (s, c) = deg.to_radians().sin_cos();
+            assert!((shift(deg, 5_000.0) * s / c - g.give_m(s, 5_000.0)).abs() < 1e-12, "{deg}");
+        }
+        for bad in [0.0, -5_000.0, f64::NAN, f64::INFINITY] {
+            assert_eq!(shift(60.0, bad), 0.0, "{bad}");
+        }
+        assert_eq!(shift(45.0, 1.0e6), MAX_GIVE_M);
     }
 }
