@@ -207,6 +207,12 @@ impl Scenario {
         )
     }
 
+    /// A lift-off alone at `angle_deg`: `load_kg` taken up over
+    /// `take_up_s` after [`HOLD_BEFORE_S`] at rest, then 6 s at rest.
+    fn lift_off(angle_deg: f64, load_kg: f64, rope: Rope, seals: Seals, take_up_s: f64, seed: u32) -> Self {
+        Scenario { load_kg, from_deg: angle_deg, to_deg: angle_deg, duration_s: 6.0, ramp_s: 0.0, shape: RampShape::Linear, rope, seals, lift_off_s: Some(take_up_s), seed }
+    }
+
     fn program(&self) -> Program {
         let lowest = self.from_deg.min(self.to_deg);
         let rope = rope_choice(self.rope, lowest);
@@ -1163,7 +1169,7 @@ fn lift_off(precision: Precision, seals_of: &[Seals]) {
     for rope in ROPES {
         for &seals in seals_of {
             for (frac, must) in [(0.9, false), (1.1, true)] {
-                let sc = Scenario { load_kg: frac * rated, from_deg: angle, to_deg: angle, duration_s: 6.0, ramp_s: 0.0, shape: RampShape::Linear, rope, seals, lift_off_s: Some(2.0), seed: 5 };
+                let sc = Scenario::lift_off(angle, frac * rated, rope, seals, 2.0, 5);
                 let pts = replay(&sc, precision);
                 let off = HOLD_BEFORE_S + 2.0;
                 let first = first_overload(&pts);
@@ -1193,7 +1199,7 @@ fn lift_offs_over(precision: Precision, angles: &[f64], take_ups: &[f64]) -> (Ve
             for rope in ROPES {
                 for seals in SEALS {
                     for (frac, must) in [(0.9, false), (1.1, true)] {
-                        let sc = Scenario { load_kg: frac * rated, from_deg: angle, to_deg: angle, duration_s: 6.0, ramp_s: 0.0, shape: RampShape::Linear, rope, seals, lift_off_s: Some(take_up), seed: 5 };
+                        let sc = Scenario::lift_off(angle, frac * rated, rope, seals, take_up, 5);
                         let pts = replay(&sc, precision);
                         let off = HOLD_BEFORE_S + take_up;
                         match (must, first_overload(&pts)) {
@@ -1276,7 +1282,7 @@ fn snatched_lift_offs(precision: Precision) -> (f64, Vec<String>, f64, Vec<Strin
         for rope in ROPES {
             for seals in SEALS {
                 for frac in [0.9, 1.1] {
-                    let sc = Scenario { load_kg: frac * rated, from_deg: angle, to_deg: angle, duration_s: 6.0, ramp_s: 0.0, shape: RampShape::Linear, rope, seals, lift_off_s: Some(0.3), seed: 5 };
+                    let sc = Scenario::lift_off(angle, frac * rated, rope, seals, 0.3, 5);
                     let pts = replay(&sc, precision);
                     let off = HOLD_BEFORE_S + 0.3;
                     if frac > 1.0 {
@@ -1359,7 +1365,7 @@ fn ninety_percent_on_a_3_m_rope_at_80_degrees(precision: Precision, take_up: f64
     let (mut cut, mut peak) = (0usize, 0.0f64);
     for seals in SEALS {
         for seed in 1..=8 {
-            let sc = Scenario { load_kg: 0.9 * rated, from_deg: 80.0, to_deg: 80.0, duration_s: 8.0, ramp_s: 0.0, shape: RampShape::Linear, rope: Rope::Held(0.0), seals, lift_off_s: Some(take_up), seed };
+            let sc = Scenario { duration_s: 8.0, ..Scenario::lift_off(80.0, 0.9 * rated, Rope::Held(0.0), seals, take_up, seed) };
             let pts = replay(&sc, precision);
             peak = pts.iter().filter(|p| p.u > 0.0).map(|p| p.ratio * p.u).fold(peak, f64::max);
             cut += usize::from(first_overload(&pts).is_some());
@@ -1433,7 +1439,7 @@ fn lift_off_fast_on_a_slow_sensor(precision: Precision) {
         for seals in SEALS {
             for take_up in [1.0, 0.5] {
                 for (frac, must) in [(0.9, false), (1.1, true)] {
-                    let sc = Scenario { load_kg: frac * rated, from_deg: angle, to_deg: angle, duration_s: 6.0, ramp_s: 0.0, shape: RampShape::Linear, rope: Rope::Thesis, seals, lift_off_s: Some(take_up), seed: 5 };
+                    let sc = Scenario::lift_off(angle, frac * rated, Rope::Thesis, seals, take_up, 5);
                     let pts = replay(&sc, precision);
                     let off = HOLD_BEFORE_S + take_up;
                     let first = first_overload(&pts);
@@ -1461,7 +1467,7 @@ fn lift_off_fast_on_a_slow_sensor(precision: Precision) {
 /// F_0 the force before, F_1 the mean after. Then the same sensors, noise
 /// and quantization as every log here.
 fn lift_off_with_an_ideal_bounce(angle_deg: f64, load_kg: f64, bounce_hz: f64, zeta: f64, take_up_s: f64) -> Vec<SynthRow> {
-    let sc = Scenario { load_kg, from_deg: angle_deg, to_deg: angle_deg, duration_s: 6.0, ramp_s: 0.0, shape: RampShape::Linear, rope: Rope::Thesis, seals: Seals::Constant, lift_off_s: Some(2.0), seed: 5 };
+    let sc = Scenario::lift_off(angle_deg, load_kg, Rope::Thesis, Seals::Constant, 2.0, 5);
     let (options, dt) = options_for_rate(rate_hz());
     let mut samples = simulate_program(model(), &sc.program(), &options).expect("simulation");
     let f0 = samples[0].reactions.piston_force_n;

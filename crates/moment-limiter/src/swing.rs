@@ -97,12 +97,7 @@ impl<T: Real> SwingGeometry<T> {
     /// it and again the horizontal part of the tip's move. No load or a
     /// non-finite one gives nothing; at most [`MAX_GIVE_M`].
     pub fn give_m(&self, sin_angle: T, load_kg: T) -> T {
-        let give = self.tip_compliance_m_per_n * sin_angle * sin_angle * self.gravity_m_s2 * load_kg;
-        if give.is_finite() && give > T::lit(0.0) {
-            give.min(T::lit(MAX_GIVE_M))
-        } else {
-            T::lit(0.0)
-        }
+        self.tip_move_m(sin_angle, sin_angle, load_kg)
     }
 
     /// How far out the tip moves when a hook load of `load_kg` hangs from
@@ -113,9 +108,17 @@ impl<T: Real> SwingGeometry<T> {
     /// load"). No load or a non-finite one moves nothing; at most
     /// [`MAX_GIVE_M`].
     pub fn tip_shift_m(&self, (sin_angle, cos_angle): (T, T), load_kg: T) -> T {
-        let shift = self.tip_compliance_m_per_n * sin_angle * cos_angle * self.gravity_m_s2 * load_kg;
-        if shift.is_finite() && shift > T::lit(0.0) {
-            shift.min(T::lit(MAX_GIVE_M))
+        self.tip_move_m(sin_angle, cos_angle, load_kg)
+    }
+
+    /// c·a·b·g·W (m): how far the tip moves horizontally under a load W on
+    /// its compliance c across the boom, a·b the geometry (sin²θ for the
+    /// give's horizontal pull, sin θ·cos θ for the shift's vertical load).
+    /// No move or a non-finite one is none; at most [`MAX_GIVE_M`].
+    fn tip_move_m(&self, a: T, b: T, load_kg: T) -> T {
+        let moved = self.tip_compliance_m_per_n * a * b * self.gravity_m_s2 * load_kg;
+        if moved.is_finite() && moved > T::lit(0.0) {
+            moved.min(T::lit(MAX_GIVE_M))
         } else {
             T::lit(0.0)
         }

@@ -241,25 +241,25 @@ fn known_loads(args: &CalibrateArgs) -> anyhow::Result<Vec<(f64, PathBuf)>> {
 /// 5.8 kN of offset, up friction 6.2 kN for 12 kN and down friction 0 for
 /// 8 kN (residual rms 23 kN), which reads every lowering low.
 fn unloaded_runs_agree_at_rest(runs: &[Run]) -> anyhow::Result<()> {
-    let rests: Vec<(&Run, f64)> = runs
+    // Each unloaded run's mean rest residual (N) and the load it reads (kg).
+    let rests: Vec<(&Run, f64, Option<f64>)> = runs
         .iter()
         .filter(|r| r.load_kg == 0.0)
-        .filter_map(|r| r.learner.mean_rest_residual_n().map(|n| (r, n)))
+        .filter_map(|r| r.learner.mean_rest_residual_n().map(|n| (r, n, r.learner.rest_load_kg())))
         .collect();
-    let lo = rests.iter().map(|x| x.1).fold(f64::INFINITY, f64::min);
-    let hi = rests.iter().map(|x| x.1).fold(f64::NEG_INFINITY, f64::max);
+    let span = |v: &mut dyn Iterator<Item = f64>| v.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| (lo.min(x), hi.max(x)));
+    let (lo, hi) = span(&mut rests.iter().map(|x| x.1));
     // The same load on every run differs in N between runs that rest at
     // other angles, but not in kg: that is the check below's, which says so.
-    let kgs: Vec<f64> = rests.iter().filter_map(|(r, _)| r.learner.rest_load_kg()).collect();
-    let kg_lo = kgs.iter().copied().fold(f64::INFINITY, f64::min);
-    let kg_hi = kgs.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    let same_load = kgs.len() == rests.len() && kg_hi - kg_lo <= 0.2 * kg_lo.abs().max(kg_hi.abs());
+    let (kg_lo, kg_hi) = span(&mut rests.iter().filter_map(|x| x.2));
+    let weighed = rests.iter().all(|x| x.2.is_some());
+    let same_load = weighed && kg_hi - kg_lo <= 0.2 * kg_lo.abs().max(kg_hi.abs());
     if rests.len() < 2 || hi - lo <= REST_RESIDUAL_LIMIT_N || same_load {
         return Ok(());
     }
     let each: Vec<String> = rests
         .iter()
-        .map(|(r, n)| match r.learner.rest_load_kg() {
+        .map(|(r, n, kg)| match kg {
             Some(kg) => format!("{} {:+.1} kN (about {kg:.0} kg)", r.name, n / 1e3),
             None => format!("{} {:+.1} kN", r.name, n / 1e3),
         })
