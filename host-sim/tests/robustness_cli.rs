@@ -697,6 +697,43 @@ fn angles_in_radians(log: &Path, out: &Path) {
     std::fs::write(out, dst).unwrap();
 }
 
+/// A log with p1 and p2 swapped under the right header: the force reads
+/// negative and `overload_lowering.csv` (8 t, OVERLOAD from 7.24 s) replays
+/// as a FAULT from 1 s on ("load estimate implausibly negative"), which cuts
+/// but does not say why. `replay` names the two means, as `calibrate` does
+/// when it refuses such a run; the log in its own order gets no warning.
+#[test]
+fn pressures_swapped_in_the_log_are_named() {
+    let dir = tempfile::tempdir().unwrap();
+    let swapped = dir.path().join("swapped.csv");
+    let src = std::fs::read_to_string(example("overload_lowering.csv")).unwrap();
+    let mut dst = String::new();
+    let mut header_seen = false;
+    for line in src.lines() {
+        if line.starts_with('#') || !header_seen {
+            header_seen |= line.starts_with("t_s,p1_bar,p2_bar,");
+            dst.push_str(line);
+        } else {
+            let mut f: Vec<&str> = line.split(',').collect();
+            f.swap(1, 2);
+            dst.push_str(&f.join(","));
+        }
+        dst.push('\n');
+    }
+    assert!(header_seen);
+    std::fs::write(&swapped, dst).unwrap();
+    let out = replay(&swapped, &[]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(text(&out.stdout).contains("FAULT"), "{}", text(&out.stdout));
+    let err = text(&out.stderr);
+    assert!(
+        err.contains("warning: p1 (piston side) reads 4.0 bar on average and p2 (rod side) 101.1 bar") && err.contains("look swapped"),
+        "{err}"
+    );
+    let out = replay(&example("overload_lowering.csv"), &[]);
+    assert!(!text(&out.stderr).contains("swapped"), "{}", text(&out.stderr));
+}
+
 /// A `t_s` column written in milliseconds makes every step of a 50 Hz log a
 /// 20 s gap: the replay is one FAULT from the second sample on. `replay`
 /// says what the column probably holds; an evenly stamped log and one with

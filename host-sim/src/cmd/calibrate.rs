@@ -98,9 +98,7 @@ fn read_log(path: &Path, load_kg: f64) -> anyhow::Result<Log> {
     let mut parser = LogParser::<f64>::new();
     let mut reader = BufReader::new(file);
     let mut buf = Vec::new();
-    // Mean pressures of the log: the boom hangs on the piston side, so p1
-    // far above p2 (p2 above p1: the columns are swapped).
-    let (mut p1_sum, mut p2_sum, mut n_p) = (0.0f64, 0.0f64, 0u32);
+    let mut pressures = super::replay::PressureMeans::default();
     let mut angles = super::replay::AngleSpan::default();
     loop {
         let line = match read_line(&mut reader, &mut buf) {
@@ -129,14 +127,7 @@ fn read_log(path: &Path, load_kg: f64) -> anyhow::Result<Log> {
                 );
             }
         }
-        // A reading that is no number (NaN, inf) is a sensor fault, which
-        // the limiter leaves out of the fit; in the means it read as
-        // swapped columns.
-        if record.frame.p1_bar.is_finite() && record.frame.p2_bar.is_finite() {
-            p1_sum += record.frame.p1_bar;
-            p2_sum += record.frame.p2_bar;
-            n_p += 1;
-        }
+        pressures.add(record.frame.p1_bar, record.frame.p2_bar);
         angles.add(record.frame.boom_angle_deg);
         frames.push((record.line, record.frame));
     }
@@ -148,12 +139,8 @@ fn read_log(path: &Path, load_kg: f64) -> anyhow::Result<Log> {
     if let Some(hint) = angles.radians_hint() {
         anyhow::bail!("{name}: {hint}; a calibration run luffs the boom through tens of degrees");
     }
-    if n_p > 0 {
-        let (p1, p2) = (p1_sum / f64::from(n_p), p2_sum / f64::from(n_p));
-        anyhow::ensure!(
-            p1 > p2,
-            "{name}: p1 (piston side) reads {p1:.1} bar on average and p2 (rod side) {p2:.1} bar: the boom hangs on the piston side, so p1_bar and p2_bar look swapped (check the wiring or the log's columns)"
-        );
+    if let Some(hint) = pressures.swapped_hint() {
+        anyhow::bail!("{name}: {hint}");
     }
     Ok(Log { name, load_kg, frames })
 }

@@ -340,6 +340,43 @@ impl AngleSpan {
     }
 }
 
+/// The mean pressures of a log, to name p1 and p2 swapped: the boom hangs
+/// on the piston side, so p1 reads far above p2 on average (a load lowered
+/// from 75° to 40° reads p1 ≈ 100 bar against p2 ≈ 4 bar). Swapped, the
+/// force reads negative and the replay FAULTs ("load estimate implausibly
+/// negative") without saying why.
+#[derive(Debug, Default)]
+pub(crate) struct PressureMeans {
+    p1_sum: f64,
+    p2_sum: f64,
+    n: u32,
+}
+
+impl PressureMeans {
+    /// Adds one sample; a reading that is no number (NaN, inf) is a sensor
+    /// fault, not a pressure, and is left out.
+    pub(crate) fn add(&mut self, p1_bar: f64, p2_bar: f64) {
+        if p1_bar.is_finite() && p2_bar.is_finite() {
+            self.p1_sum += p1_bar;
+            self.p2_sum += p2_bar;
+            self.n += 1;
+        }
+    }
+
+    /// What to tell the user when p2 reads at least as high as p1 on
+    /// average.
+    pub(crate) fn swapped_hint(&self) -> Option<String> {
+        let n = f64::from(self.n);
+        let (p1, p2) = (self.p1_sum / n, self.p2_sum / n);
+        (self.n > 0 && p1 <= p2).then(|| {
+            format!(
+                "p1 (piston side) reads {p1:.1} bar on average and p2 (rod side) {p2:.1} bar: the boom hangs on the \
+                 piston side, so p1_bar and p2_bar look swapped (check the wiring or the log's columns)"
+            )
+        })
+    }
+}
+
 /// Runs the subcommand; returns the exit code.
 pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
     let file = open_log(&args.log)?;
@@ -378,6 +415,7 @@ pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
     let mut text = String::new();
     let mut spacing = Spacing::default();
     let mut angles = AngleSpan::default();
+    let mut pressures = PressureMeans::default();
 
     let error = for_each_record_pipelined(
         &mut reader,
@@ -385,6 +423,7 @@ pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
         |record| {
             spacing.add(record.t_us);
             angles.add(f64::from(record.frame.boom_angle_deg));
+            pressures.add(f64::from(record.frame.p1_bar), f64::from(record.frame.p2_bar));
             let (report, event) = replay.feed(record);
             if let Some(r) = recording.as_mut() {
                 r.push(record, &report);
@@ -427,6 +466,9 @@ pub fn run(args: ReplayArgs) -> anyhow::Result<u8> {
         eprintln!("warning: {hint}.");
     }
     if let Some(hint) = spacing.milliseconds_hint() {
+        eprintln!("warning: {hint}.");
+    }
+    if let Some(hint) = pressures.swapped_hint() {
         eprintln!("warning: {hint}.");
     }
     let code = match &error {
