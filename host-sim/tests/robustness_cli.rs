@@ -680,20 +680,28 @@ fn write_errors_are_errors() {
 
 /// Writes `log` to `out` with its `boom_angle_deg` (fourth column) in radians.
 fn angles_in_radians(log: &Path, out: &Path) {
+    rewrite_rows(log, out, |f| f[3] = format!("{:.5}", f[3].parse::<f64>().unwrap().to_radians()));
+}
+
+/// Copies the log `log` to `out` with `f` applied to the fields of every
+/// sample row (`t_s,p1_bar,p2_bar,boom_angle_deg,…`); comments and the
+/// header as they are.
+fn rewrite_rows(log: &Path, out: &Path, f: impl Fn(&mut Vec<String>)) {
     let src = std::fs::read_to_string(log).unwrap();
     let mut dst = String::new();
     let mut header_seen = false;
     for line in src.lines() {
         if line.starts_with('#') || !header_seen {
-            header_seen |= line.starts_with("t_s,");
+            header_seen |= line.starts_with("t_s,p1_bar,p2_bar,boom_angle_deg");
             dst.push_str(line);
         } else {
-            let mut f: Vec<String> = line.split(',').map(str::to_string).collect();
-            f[3] = format!("{:.5}", f[3].parse::<f64>().unwrap().to_radians());
-            dst.push_str(&f.join(","));
+            let mut fields: Vec<String> = line.split(',').map(str::to_string).collect();
+            f(&mut fields);
+            dst.push_str(&fields.join(","));
         }
         dst.push('\n');
     }
+    assert!(header_seen, "{} has no header", log.display());
     std::fs::write(out, dst).unwrap();
 }
 
@@ -706,22 +714,7 @@ fn angles_in_radians(log: &Path, out: &Path) {
 fn pressures_swapped_in_the_log_are_named() {
     let dir = tempfile::tempdir().unwrap();
     let swapped = dir.path().join("swapped.csv");
-    let src = std::fs::read_to_string(example("overload_lowering.csv")).unwrap();
-    let mut dst = String::new();
-    let mut header_seen = false;
-    for line in src.lines() {
-        if line.starts_with('#') || !header_seen {
-            header_seen |= line.starts_with("t_s,p1_bar,p2_bar,");
-            dst.push_str(line);
-        } else {
-            let mut f: Vec<&str> = line.split(',').collect();
-            f.swap(1, 2);
-            dst.push_str(&f.join(","));
-        }
-        dst.push('\n');
-    }
-    assert!(header_seen);
-    std::fs::write(&swapped, dst).unwrap();
+    rewrite_rows(&example("overload_lowering.csv"), &swapped, |f| f.swap(1, 2));
     let out = replay(&swapped, &[]);
     assert_eq!(out.status.code(), Some(2));
     assert!(text(&out.stdout).contains("FAULT"), "{}", text(&out.stdout));
