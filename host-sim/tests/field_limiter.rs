@@ -555,28 +555,44 @@ fn thesis_moves() -> Vec<(f64, f64, f64, f64, RampShape)> {
     v
 }
 
+/// Replays every scenario of `cases` (printing its highest estimated u and
+/// OVERLOAD samples) and returns those with an OVERLOAD, and the highest
+/// estimated u of all: the check of every "no OVERLOAD at 85 %" test.
+fn false_overloads(precision: Precision, cases: impl IntoIterator<Item = Scenario>) -> (Vec<String>, f64) {
+    let (mut failures, mut worst) = (Vec::new(), 0.0f64);
+    for sc in cases {
+        let pts = replay(&sc, precision);
+        let peak = pts.iter().map(|p| p.ratio * p.u).fold(0.0, f64::max);
+        worst = worst.max(peak);
+        let n = pts.iter().filter(|p| p.state == LimiterState::Overload).count();
+        println!("{:<60} peak estimated u {peak:.3}, OVERLOAD samples {n}", sc.name());
+        if let Some((t, u)) = first_overload(&pts) {
+            failures.push(format!("{} OVERLOAD at {t:.2} s, true u {u:.3} (highest estimated u {peak:.3})", sc.name()));
+        }
+    }
+    (failures, worst)
+}
+
+/// The 85 % moves of `moves` (from, to, duration, ramp, shape): 85 % of the
+/// rated load at 40°, each of `ropes` and `seals_of`.
+fn moves_at_85_percent(moves: Vec<(f64, f64, f64, f64, RampShape)>, ropes: &[Rope], seals_of: &[Seals]) -> Vec<Scenario> {
+    let w = 0.85 * rated_kg(40f64.to_radians());
+    let mut out = Vec::new();
+    for (a, b, dur, ramp, shape) in moves {
+        for &rope in ropes {
+            for &seals in seals_of {
+                out.push(Scenario { load_kg: w, from_deg: a, to_deg: b, duration_s: dur, ramp_s: ramp, shape, rope, seals, lift_off_s: None, seed: 7 });
+            }
+        }
+    }
+    out
+}
+
 /// No OVERLOAD while the true static utilization stays ≤ 0.85: every thesis
 /// move (10 s, 30 s; up, down; linear, cycloidal) at 85 % of the rated load
 /// at 40°, every rope, both friction laws.
 fn no_false_overload(precision: Precision, ropes: &[Rope], seals_of: &[Seals]) {
-    let w = 0.85 * rated_kg(40f64.to_radians());
-    let mut failures = Vec::new();
-    let mut worst: f64 = 0.0;
-    for (a, b, dur, ramp, shape) in thesis_moves() {
-        for &rope in ropes {
-            for &seals in seals_of {
-                let sc = Scenario { load_kg: w, from_deg: a, to_deg: b, duration_s: dur, ramp_s: ramp, shape, rope, seals, lift_off_s: None, seed: 7 };
-                let pts = replay(&sc, precision);
-                let peak = pts.iter().map(|p| p.ratio * p.u).fold(0.0, f64::max);
-                worst = worst.max(peak);
-                let n = pts.iter().filter(|p| p.state == LimiterState::Overload).count();
-                println!("{:<60} peak estimated u {peak:.3}, OVERLOAD samples {n}", sc.name());
-                if let Some((t, u)) = first_overload(&pts) {
-                    failures.push(format!("{} OVERLOAD at {t:.2} s, true u {u:.3}", sc.name()));
-                }
-            }
-        }
-    }
+    let (failures, worst) = false_overloads(precision, moves_at_85_percent(thesis_moves(), ropes, seals_of));
     println!("{precision:?}: {} false OVERLOADs of {}; highest estimated u {worst:.3}", failures.len(), 8 * ropes.len() * seals_of.len());
     assert!(failures.is_empty(), "{failures:#?}");
 }
@@ -587,7 +603,7 @@ fn no_false_overload(precision: Precision, ropes: &[Rope], seals_of: &[Seals]) {
 /// friction laws (the true u is highest, 0.85, at lo). Returns the cases
 /// with an OVERLOAD and the highest estimated u.
 fn no_false_overload_over(precision: Precision, ranges: &[(f64, f64)]) -> (Vec<String>, f64) {
-    let (mut failures, mut worst) = (Vec::new(), 0.0f64);
+    let mut cases = Vec::new();
     for &(lo, hi) in ranges {
         let w = 0.85 * rated_kg(lo.to_radians());
         for (a, b) in [(lo, hi), (hi, lo)] {
@@ -595,19 +611,14 @@ fn no_false_overload_over(precision: Precision, ranges: &[(f64, f64)]) -> (Vec<S
                 for shape in [RampShape::Linear, RampShape::Cycloidal] {
                     for rope in ROPES {
                         for seals in SEALS {
-                            let sc = Scenario { load_kg: w, from_deg: a, to_deg: b, duration_s: dur, ramp_s: ramp, shape, rope, seals, lift_off_s: None, seed: 7 };
-                            let pts = replay(&sc, precision);
-                            let peak = pts.iter().map(|p| p.ratio * p.u).fold(0.0, f64::max);
-                            worst = worst.max(peak);
-                            if let Some((t, u)) = first_overload(&pts) {
-                                failures.push(format!("{} OVERLOAD at {t:.2} s, true u {u:.3} (highest estimated u {peak:.3})", sc.name()));
-                            }
+                            cases.push(Scenario { load_kg: w, from_deg: a, to_deg: b, duration_s: dur, ramp_s: ramp, shape, rope, seals, lift_off_s: None, seed: 7 });
                         }
                     }
                 }
             }
         }
     }
+    let (failures, worst) = false_overloads(precision, cases);
     println!("{precision:?}, ranges {ranges:?}: {} false OVERLOADs of {}; highest estimated u {worst:.3}", failures.len(), ranges.len() * 64);
     (failures, worst)
 }
@@ -718,11 +729,19 @@ fn lowering_scenarios(moves: &[(f64, f64, f64, f64)], ropes: &[Rope], seals_of: 
 /// neither OVERLOAD nor FAULT (not cut, late or released); prints every
 /// case's lowest onset.
 fn lowerings(precision: Precision, moves: &[(f64, f64, f64, f64)]) -> Vec<String> {
-    let mut failures = Vec::new();
-    for sc in lowering_scenarios(moves, &ROPES, &SEALS) {
-        failures.extend(lowering_bound_failures(&sc.name(), &replay(&sc, precision)));
+    lowerings_on(precision, moves, &ROPES).0
+}
+
+/// [`lowerings`] on `ropes`, both friction laws; also returns the lowest
+/// true u at an OVERLOAD onset of all of them.
+fn lowerings_on(precision: Precision, moves: &[(f64, f64, f64, f64)], ropes: &[Rope]) -> (Vec<String>, f64) {
+    let (mut failures, mut lowest) = (Vec::new(), f64::INFINITY);
+    for sc in lowering_scenarios(moves, ropes, &SEALS) {
+        let pts = replay(&sc, precision);
+        lowest = lowest_onset_u(&pts).map_or(lowest, |l| lowest.min(l));
+        failures.extend(lowering_bound_failures(&sc.name(), &pts));
     }
-    failures
+    (failures, lowest)
 }
 
 /// Lowerings faster than the thesis's 4 °/s: 80° → 20° and 70° → 20° in
@@ -1283,11 +1302,16 @@ fn lift_off(precision: Precision, seals_of: &[Seals]) {
 /// not cut or cut more than 1 s after it leaves the ground) and the
 /// longest delay of a 110 % cut.
 fn lift_offs_over(precision: Precision, angles: &[f64], take_ups: &[f64]) -> (Vec<String>, f64) {
+    lift_offs_on(precision, angles, take_ups, &ROPES)
+}
+
+/// [`lift_offs_over`] on `ropes`.
+fn lift_offs_on(precision: Precision, angles: &[f64], take_ups: &[f64], ropes: &[Rope]) -> (Vec<String>, f64) {
     let (mut failures, mut worst) = (Vec::new(), 0.0f64);
     for &angle in angles {
         let rated = rated_kg(angle.to_radians());
         for &take_up in take_ups {
-            for rope in ROPES {
+            for &rope in ropes {
                 for seals in SEALS {
                     for (frac, must) in [(0.9, false), (1.1, true)] {
                         let sc = Scenario::lift_off(angle, frac * rated, rope, seals, take_up, 5);
@@ -2639,11 +2663,16 @@ fn band_with(precision: Precision, seals_of: &[Seals]) {
 
 /// The band's (p5, p50, p95) in motion and at rest (see [`band`]).
 fn band_percentiles(precision: Precision, seals_of: &[Seals]) -> ([f64; 3], [f64; 3]) {
+    band_percentiles_on(precision, &ROPES, seals_of)
+}
+
+/// [`band_percentiles`] on `ropes`.
+fn band_percentiles_on(precision: Precision, ropes: &[Rope], seals_of: &[Seals]) -> ([f64; 3], [f64; 3]) {
     let (mut motion, mut rest) = (Vec::new(), Vec::new());
     for (a, b, dur, ramp, shape) in thesis_moves() {
         for frac in [0.3, 0.8] {
             let w = frac * rated_kg(40f64.to_radians());
-            for rope in ROPES {
+            for &rope in ropes {
                 for &seals in seals_of {
                     let sc = Scenario { load_kg: w, from_deg: a, to_deg: b, duration_s: dur, ramp_s: ramp, shape, rope, seals, lift_off_s: None, seed: 3 };
                     let (_, cv0, cv1, end) = sc.times();
@@ -3286,31 +3315,18 @@ const HELD_ROPES: [Rope; 3] = [Rope::Held(0.0), Rope::Held(0.5), Rope::Held(1.0)
 fn bounds_against_a_rope_bounce(precision: Precision, hz: f64, zeta: f64) -> (Vec<String>, f64, Vec<String>, f64) {
     let mut out = (Vec::new(), 0.0f64, Vec::new(), f64::INFINITY);
     with_setting(&ROPE_BOUNCE, Some((hz, zeta)), || {
-        let w = 0.85 * rated_kg(40f64.to_radians());
         // The thesis's moves, and the same with the ramps of a hard start
         // and stop (0.5 s, the campaign's shortest), which excite a 1 Hz
         // bounce most (a 1 s linear ramp does not excite 1 Hz at all).
         let hard = thesis_moves().into_iter().map(|(a, b, dur, _, shape)| (a, b, dur, 0.5, shape));
-        for (a, b, dur, ramp, shape) in thesis_moves().into_iter().chain(hard) {
-            for rope in HELD_ROPES {
-                for seals in SEALS {
-                    let sc = Scenario { load_kg: w, from_deg: a, to_deg: b, duration_s: dur, ramp_s: ramp, shape, rope, seals, lift_off_s: None, seed: 7 };
-                    let pts = replay(&sc, precision);
-                    out.1 = pts.iter().map(|p| p.ratio * p.u).fold(out.1, f64::max);
-                    if let Some((t, u)) = first_overload(&pts) {
-                        out.0.push(format!("{hz} Hz zeta {zeta}: {} OVERLOAD at {t:.2} s, true u {u:.3}", sc.name()));
-                    }
-                }
-            }
-        }
-        for sc in lowering_scenarios(&[(80.0, 20.0, 15.0, 1.0), (80.0, 20.0, 45.0, 1.5), (80.0, 20.0, 15.0, 0.5), (80.0, 20.0, 45.0, 0.5)], &HELD_ROPES, &SEALS) {
-            let pts = replay(&sc, precision);
-            if let Some(l) = lowest_onset_u(&pts) {
-                out.3 = out.3.min(l);
-            }
-            out.2.extend(lowering_bound_failures(&format!("{hz} Hz zeta {zeta}: {}", sc.name()), &pts));
-        }
+        let moves = thesis_moves().into_iter().chain(hard).collect();
+        (out.0, out.1) = false_overloads(precision, moves_at_85_percent(moves, &HELD_ROPES, &SEALS));
+        let lowering = [(80.0, 20.0, 15.0, 1.0), (80.0, 20.0, 45.0, 1.5), (80.0, 20.0, 15.0, 0.5), (80.0, 20.0, 45.0, 0.5)];
+        (out.2, out.3) = lowerings_on(precision, &lowering, &HELD_ROPES);
     });
+    let world = |f: &mut Vec<String>| f.iter_mut().for_each(|x| *x = format!("{hz} Hz zeta {zeta}: {x}"));
+    world(&mut out.0);
+    world(&mut out.2);
     println!("  largest bounce: {:.1} % of the load's pull", 100.0 * BOUNCE_PEAK.with(|p| p.replace(0.0)));
     println!(
         "{precision:?}, a {hz} Hz zeta {zeta} bounce on the rope: 85 % moves {} OVERLOADs of 96, highest estimated u {:.3}; lowerings {} failures of 48, lowest onset u {:.3}",
@@ -3350,7 +3366,6 @@ fn a_bounce_on_the_rope_keeps_the_bounds_f32() {
     a_bounce_on_the_rope_keeps_the_bounds(Precision::F32);
 }
 
-
 /// Held ropes at ten lengths spread between the bank's (5 %, 15 %, …, 95 %
 /// of the way from 3 m to the longest the move's lowest angle allows), not
 /// the three of [`ROPES`]: the issue asks for any hanging length from 3 m to
@@ -3368,24 +3383,7 @@ fn ropes_between_the_banks_lengths(precision: Precision) {
     let ropes: Vec<Rope> = (0..10).map(|k| Rope::Held(0.05 + 0.1 * f64::from(k))).collect();
     no_false_overload(precision, &ropes, &SEALS);
     lowering_past_rated_radius(precision, &ropes, &SEALS);
-    let rated = rated_kg(80f64.to_radians());
-    let mut failures = Vec::new();
-    for take_up in [1.0, 2.0] {
-        for &rope in &ropes {
-            for seals in SEALS {
-                for (frac, must) in [(0.9, false), (1.1, true)] {
-                    let sc = Scenario::lift_off(80.0, frac * rated, rope, seals, take_up, 5);
-                    let off = HOLD_BEFORE_S + take_up;
-                    match (must, first_overload(&replay(&sc, precision))) {
-                        (false, Some((t, _))) => failures.push(format!("{}: OVERLOAD at {t:.2} s", sc.name())),
-                        (true, None) => failures.push(format!("{}: no OVERLOAD", sc.name())),
-                        (true, Some((t, _))) if t > off + 1.0 => failures.push(format!("{}: OVERLOAD {:.2} s after lift", sc.name(), t - off)),
-                        _ => {}
-                    }
-                }
-            }
-        }
-    }
+    let (failures, _) = lift_offs_on(precision, &[80.0], &[1.0, 2.0], &ropes);
     assert!(failures.is_empty(), "{failures:#?}");
 }
 
@@ -3403,36 +3401,20 @@ fn ropes_between_the_banks_lengths_keep_the_bounds_f32() {
 /// of the 1 m the limiter's paid-out hypothesis assumes ([`LOAD_CLEARANCE_M`]):
 /// the rope is 2–4 m shorter at every angle, so its swing's period is not the
 /// hypothesis's. The 85 % moves of [`no_false_overload`] and the lowerings of
-/// [`lowering_past_rated_radius`] keep their bounds, and the estimate stays
-/// within 1.00–1.10 of the true load (p5–p95; loads 30 % and 80 % of the
-/// load rated at the move's lowest angle, in motion from 1 s after the ramp
-/// to its end and from 1 s to 2 s after the stop), both friction laws.
-/// The crane is calibrated at that clearance too (its unloaded runs on the
-/// shorter rope). Measured (f64): at 3 m highest estimated u 0.902 at 85 %,
-/// lowerings cut at true u 0.957–0.975, band in motion 1.036/1.048/1.066
-/// and at rest 1.009/1.055/1.071; at 5 m 0.906, 0.947–0.965,
-/// 1.037/1.053/1.073 and 1.011/1.055/1.060.
+/// [`lowering_past_rated_radius`] keep their bounds, and the band of
+/// [`band_percentiles`] on this rope stays within 1.00–1.10, both friction
+/// laws. The crane is calibrated at that clearance too (its unloaded runs
+/// on the shorter rope). Measured (f64): at 3 m highest estimated u 0.902
+/// at 85 %, lowerings cut at true u 0.957–0.975, band in motion
+/// 1.036/1.048/1.065 and at rest 1.010/1.053/1.070; at 5 m 0.906,
+/// 0.947–0.965, 1.037/1.052/1.072 and 1.011/1.055/1.060.
 #[test]
 fn paid_out_to_another_clearance_keeps_the_bounds() {
     for clearance in [3.0, 5.0] {
         with_setting(&LOAD_CLEARANCE_M, Some(clearance), || {
             no_false_overload(Precision::F64, &[Rope::Thesis], &SEALS);
             lowering_past_rated_radius(Precision::F64, &[Rope::Thesis], &SEALS);
-            let (mut motion, mut rest) = (Vec::new(), Vec::new());
-            for (a, b, dur, ramp, shape) in thesis_moves() {
-                for seals in SEALS {
-                    for frac in [0.3, 0.8] {
-                        let load_kg = frac * rated_kg(a.min(b).to_radians());
-                        let sc = Scenario { load_kg, from_deg: a, to_deg: b, duration_s: dur, ramp_s: ramp, shape, rope: Rope::Thesis, seals, lift_off_s: None, seed: 7 };
-                        let pts = replay(&sc, Precision::F64);
-                        let (_, ramped, braking, stopped) = sc.times();
-                        motion.extend(pts.iter().filter(|p| p.t >= ramped + 1.0 && p.t <= braking && p.ratio.is_finite()).map(|p| p.ratio));
-                        rest.extend(pts.iter().filter(|p| p.t >= stopped + 1.0 && p.t <= stopped + 2.0 && p.ratio.is_finite()).map(|p| p.ratio));
-                    }
-                }
-            }
-            let band = |v: &mut Vec<f64>| [0.05, 0.5, 0.95].map(|q| percentile(v, q));
-            let (m, r) = (band(&mut motion), band(&mut rest));
+            let (m, r) = band_percentiles_on(Precision::F64, &[Rope::Thesis], &SEALS);
             println!("paid out at {clearance} m above the ground: band in motion {m:.3?}, at rest {r:.3?}");
             assert_band(&format!("paid out at {clearance} m"), m, r, false);
         });
