@@ -13,28 +13,14 @@ use common::{bin, example, json, replay, text};
 /// Rewrites the `t_s` of every data row of `log` (first column) with `f`
 /// applied to its exact microseconds; writes the result to `out`.
 fn rewrite_times(log: &Path, out: &Path, mut f: impl FnMut(usize, i64) -> i64) {
-    let src = std::fs::read_to_string(log).unwrap();
-    let mut dst = String::new();
     let mut row = 0;
-    let mut header_seen = false;
-    for line in src.lines() {
-        if line.starts_with('#') || line.trim().is_empty() {
-            dst.push_str(line);
-        } else if !header_seen {
-            assert!(line.starts_with("t_s,"), "t_s must be the first column");
-            header_seen = true;
-            dst.push_str(line);
-        } else {
-            let (t, rest) = line.split_once(',').unwrap();
-            let us = f(row, parse_time_us(t).unwrap());
-            row += 1;
-            let sign = if us < 0 { "-" } else { "" };
-            let a = us.unsigned_abs();
-            dst.push_str(&format!("{sign}{}.{:06},{rest}", a / 1_000_000, a % 1_000_000));
-        }
-        dst.push('\n');
-    }
-    std::fs::write(out, dst).unwrap();
+    rewrite_rows(log, out, |fields| {
+        let us = f(row, parse_time_us(&fields[0]).unwrap());
+        row += 1;
+        let sign = if us < 0 { "-" } else { "" };
+        let a = us.unsigned_abs();
+        fields[0] = format!("{sign}{}.{:06}", a / 1_000_000, a % 1_000_000);
+    });
 }
 
 /// The events of a `--json` replay without their times: (sample, state,
@@ -684,14 +670,14 @@ fn angles_in_radians(log: &Path, out: &Path) {
 }
 
 /// Copies the log `log` to `out` with `f` applied to the fields of every
-/// sample row (`t_s,p1_bar,p2_bar,boom_angle_deg,…`); comments and the
-/// header as they are.
-fn rewrite_rows(log: &Path, out: &Path, f: impl Fn(&mut Vec<String>)) {
+/// sample row (`t_s,p1_bar,p2_bar,boom_angle_deg,…`); comments, blank lines
+/// and the header as they are.
+fn rewrite_rows(log: &Path, out: &Path, mut f: impl FnMut(&mut Vec<String>)) {
     let src = std::fs::read_to_string(log).unwrap();
     let mut dst = String::new();
     let mut header_seen = false;
     for line in src.lines() {
-        if line.starts_with('#') || !header_seen {
+        if line.starts_with('#') || line.trim().is_empty() || !header_seen {
             header_seen |= line.starts_with("t_s,p1_bar,p2_bar,boom_angle_deg");
             dst.push_str(line);
         } else {
