@@ -42,7 +42,7 @@ use crane_model::multibody::ThesisModel;
 use crane_model::data::profile::RampShape;
 use crane_model::multibody::rope::RopeChoice;
 use crane_model::sim::integrator::NewtonStart;
-use crane_model::sim::simulation::{Direction, Maneuver, Outputs, Program, Segment, SimulationOptions};
+use crane_model::sim::simulation::{Direction, Maneuver, Outputs, Program, Sample, Segment, SimulationOptions};
 use rayon::prelude::*;
 use serde::Serialize;
 use std::io::Write;
@@ -994,13 +994,22 @@ fn parse_shard(s: Option<&str>) -> Result<(usize, usize)> {
     Ok((k, n))
 }
 
+/// A world other than the simulator's for the campaign's logs: given a run's
+/// simulated samples and its rope, it replaces their dynamics (the piston
+/// force) with its own. The `field_limiter` tests run the campaign in a
+/// second formulation of the crane this way ([`summary_in_world`]).
+pub type World<'a> = &'a (dyn Fn(&mut [Sample<f64>], RopeChoice) + Sync);
+
 /// The unloaded up and down calibration runs of `crane` (10 s cycloidal 40°↔80°).
-fn calibrate_crane(model: &ThesisModel<f64>, crane: &Crane, options: &SimulationOptions, dt: f64) -> Result<(CraneCalibration, bool)> {
+fn calibrate_crane(model: &ThesisModel<f64>, crane: &Crane, options: &SimulationOptions, dt: f64, world: Option<World>) -> Result<(CraneCalibration, bool)> {
     let mut logs = Vec::new();
     for (i, dir) in [Direction::Up, Direction::Down].into_iter().enumerate() {
         let mut m = Maneuver::thesis(0.0, 10.0, RampShape::Cycloidal, dir).map_err(|e| anyhow::anyhow!("{e}"))?;
         m.settle_s = 1.0;
-        let samples = synth_core::simulate(model, &m, options).map_err(|e| anyhow::anyhow!("calibration run: {e}"))?;
+        let mut samples = synth_core::simulate(model, &m, options).map_err(|e| anyhow::anyhow!("calibration run: {e}"))?;
+        if let Some(w) = world {
+            w(&mut samples, m.rope);
+        }
         let sensors = SensorModel { seed: 1000 + 2 * crane.index as u32 + i as u32, ..crane.sensors };
         logs.push(synth_core::synthesize(&samples, dt, 1.0, 0.0, &sensors));
     }
@@ -1010,7 +1019,7 @@ fn calibrate_crane(model: &ThesisModel<f64>, crane: &Crane, options: &Simulation
 
 /// Runs the campaign and returns the summary and the per-scenario records (JSON
 /// lines, in scenario order).
-fn run_campaign(args: &CampaignArgs, progress: bool) -> Result<(Summary, Vec<String>)> {
+fn run_campaign(args: &CampaignArgs, progress: bool, world: Option<World>) -> Result<(Summary, Vec<String>)> {
     if args.scenarios == 0 || args.scenarios > 10_000_000 {
         bail!("--scenarios must be in 1..=10000000");
     }
@@ -1042,7 +1051,7 @@ fn run_campaign(args: &CampaignArgs, progress: bool) -> Result<(Summary, Vec<Str
         args.only.clone()
     };
     let cranes: Vec<Crane> = (0..args.cranes.min(args.scenarios)).map(|i| Crane::new(args.seed, i, args.wide)).collect();
-    let calibrations: Vec<(CraneCalibration, bool)> = cranes.par_iter().map(|c| calibrate_crane(&model, c, &options, dt)).collect::<Result<_>>()?;
+    let calibrations: Vec<(CraneCalibration, bool)> = cranes.par_iter().map(|c| calibrate_crane(&model, c, &options, dt, world)).collect::<Result<_>>()?;
     let bar = if progress { indicatif::ProgressBar::new(indices.len() as u64) } else { indicatif::ProgressBar::hidden() };
     bar.set_style(
         indicatif::ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {pos}/{len} scenarios ({per_sec}, eta {eta})")
@@ -1058,7 +1067,10 @@ fn run_campaign(args: &CampaignArgs, progress: bool) -> Result<(Summary, Vec<Str
             let crane = &cranes[sc.crane];
             let program = sc.program()?;
             let t0 = std::time::Instant::now();
-            let samples = synth_core::simulate_program(&model, &program, &options).map_err(|e| anyhow::anyhow!("scenario {i}: simulation: {e}"))?;
+            let mut samples = synth_core::simulate_program(&model, &program, &options).map_err(|e| anyhow::anyhow!("scenario {i}: simulation: {e}"))?;
+            if let Some(w) = world {
+                w(&mut samples, program.rope);
+            }
             let t1 = std::time::Instant::now();
             let sensors = SensorModel { seed: sc.noise_seed, ..crane.sensors };
             let rows = synth_core::synthesize(&samples, dt, 0.0, sc.load_kg, &sensors);
@@ -1153,10 +1165,17 @@ fn write_tally(out: &mut impl Write, t: &TallySummary) -> std::io::Result<()> {
     Ok(())
 }
 
+/// The campaign of `args` with its logs made in `world`: the summary object
+/// `--json` prints last. No progress bar, no output.
+pub fn summary_in_world(args: &CampaignArgs, world: World) -> Result<serde_json::Value> {
+    let (summary, _) = run_campaign(args, false, Some(world))?;
+    Ok(serde_json::to_value(&summary)?)
+}
+
 /// Runs the subcommand; returns the exit code (0; the grades are in the output).
 pub fn run(args: CampaignArgs) -> Result<u8> {
     let started = std::time::Instant::now();
-    let (summary, lines) = run_campaign(&args, true)?;
+    let (summary, lines) = run_campaign(&args, true, None)?;
     let elapsed = started.elapsed().as_secs_f64();
     let stdout = std::io::stdout();
     let mut out = stdout.lock();
