@@ -3588,7 +3588,14 @@ fn the_second_formulation(precision: Precision) {
 /// estimated u 0.920 but on the 3 m rope raised 30° → 85° while its swing
 /// takes p1 past its range (1.33–1.40 in that FAULT, which cuts, as on the
 /// simulator's logs); lowerings cut at true u 0.939–1.010; 110 % taken up in
-/// 1 s or 2 s cut within 0.82 s of leaving the ground.
+/// 1 s or 2 s cut within 0.82 s of leaving the ground. Taken up in 0.5 s,
+/// which on the simulator's logs is cut up to 1.03 s after
+/// (`lift_off_in_half_a_second_on_a_short_rope_at_a_steep_boom_known_gap`),
+/// 110 % is cut within 0.98 s here (asserted within 1 s, 90 % never): the
+/// simulator's bounce on the boom's bending costs that case its second.
+/// Snatched in 0.3 s it is cut up to 1.06 s after (pinned at 1.07 s; 1.12 s
+/// on the simulator's logs): there the filters' step response alone is
+/// over the second (`lift_off_snatched_in_0_3_s_known_gap`).
 #[test]
 fn the_second_formulation_keeps_the_bounds_and_the_band_f64() {
     the_second_formulation(Precision::F64);
@@ -3603,6 +3610,15 @@ fn the_second_formulation_keeps_the_bounds_and_the_band_f64() {
         println!("the second formulation, other ranges: highest estimated u at 85 % {worst:.3}; lowerings cut from true u {lowest:.3}; lift-offs cut within {slowest:.2} s");
         failures.extend(lowering);
         failures.extend(lift);
+        // Without the simulator's bounce on the boom's bending, what the
+        // filters alone cost a fast take-up.
+        let (half, slowest_half) = lift_offs_over(Precision::F64, &[20.0, 50.0, 65.0, 80.0], &[0.5]);
+        let (snatched, slowest_snatched) = lift_offs_over(Precision::F64, &[20.0, 50.0, 65.0, 80.0], &[0.3]);
+        let snatched_uncut: Vec<&String> = snatched.iter().filter(|f| !f.ends_with("after it leaves the ground")).collect();
+        println!("the second formulation: 110 % taken up in 0.5 s cut within {slowest_half:.2} s, in 0.3 s within {slowest_snatched:.2} s; 0.3 s failures other than late: {snatched_uncut:?}");
+        failures.extend(half);
+        failures.extend(snatched_uncut.into_iter().cloned());
+        assert!(slowest_snatched <= 1.07, "snatched in 0.3 s, cut {slowest_snatched:.2} s after");
         assert!(failures.is_empty(), "{failures:#?}");
     });
 }
