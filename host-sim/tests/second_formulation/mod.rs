@@ -100,18 +100,18 @@ impl RigidCrane {
         (dx.hypot(dy), dy.atan2(dx))
     }
 
-    /// s′(θ) = ds/dθ (m/rad).
-    pub fn actuator_slope(&self, th: f64) -> f64 {
-        (self.cylinder(th + H).0 - self.cylinder(th - H).0) / (2.0 * H)
+    /// The cylinder's length s and its rates s′(θ) = ds/dθ (m/rad) and
+    /// ψ′(θ) = dψ/dθ, by central differences.
+    fn cylinder_slopes(&self, th: f64) -> (f64, f64, f64) {
+        let ((s_hi, psi_hi), (s_lo, psi_lo)) = (self.cylinder(th + H), self.cylinder(th - H));
+        (self.cylinder(th).0, (s_hi - s_lo) / (2.0 * H), (psi_hi - psi_lo) / (2.0 * H))
     }
 
     /// The generalized inertia J(θ) (kg·m²): twice the kinetic energy at
     /// θ̇ = 1 rad/s.
-    pub fn inertia(&self, th: f64) -> f64 {
+    fn inertia(&self, th: f64) -> f64 {
         let c = &self.qs.crane;
-        let (s, _) = self.cylinder(th);
-        let ds = self.actuator_slope(th);
-        let dpsi = (self.cylinder(th + H).1 - self.cylinder(th - H).1) / (2.0 * H);
+        let (s, ds, dpsi) = self.cylinder_slopes(th);
         // Lug rod: a uniform rod turning with the boom about A0.
         let lug = &c.lug_rod;
         let mut j = self.boom_inertia_kg_m2 + lug.mass_kg() * lug.length_m * lug.length_m / 3.0;
@@ -152,19 +152,15 @@ impl RigidCrane {
         let l = self.boom_length_m();
         let dj = (self.inertia(th + H) - self.inertia(th - H)) / (2.0 * H);
         let q_load = tip_force[0] * (-l * th.sin()) + tip_force[1] * (l * th.cos());
-        (self.inertia(th) * thdd + 0.5 * dj * thd * thd + self.weight_moment(th) - q_load) / self.actuator_slope(th)
+        (self.inertia(th) * thdd + 0.5 * dj * thd * thd + self.weight_moment(th) - q_load) / self.cylinder_slopes(th).1
     }
 
-    /// The reference's quasi-static piston force of a rigid boom with the
-    /// paid-out rope and `load_kg` (N), to check [`Self::piston_force`] at rest.
-    pub fn reference_static_force(&self, th: f64, load_kg: f64) -> f64 {
-        self.qs.piston_force(th, load_kg, false)
-    }
-
-    /// The same with the boom's static sag (the reference's beam), as the
-    /// flexible model has it at rest.
-    pub fn reference_static_force_with_sag(&self, th: f64, load_kg: f64) -> f64 {
-        self.qs.piston_force(th, load_kg, true)
+    /// The reference's quasi-static piston force with the paid-out rope and
+    /// `load_kg` (N): of a rigid boom, to check [`Self::piston_force`] at
+    /// rest, or with the boom's static sag (the reference's beam) as the
+    /// flexible model has it.
+    pub fn reference_static_force(&self, th: f64, load_kg: f64, sag: bool) -> f64 {
+        self.qs.piston_force(th, load_kg, sag)
     }
 
     /// Replaces the piston force and the swing of the simulator's `samples`
