@@ -1,7 +1,8 @@
 //! `crane-sim calibrate UNLOADED.csv... [--known-load-kg W LOADED.csv]... --out CAL.json`
 //!
 //! Learns the angle sensor's lag (`moment_limiter::sensor_lag`, from the
-//! unloaded runs), then the cylinder's seal friction law per direction,
+//! unloaded runs: searched as a first-order lag and as pendulums of three
+//! dampings, the lag on a steady rate of the shape that fits best), then the cylinder's seal friction law per direction,
 //! friction = a + b·|F|, and the force offset from unloaded boom-up and
 //! boom-down logs and,
 //! when given, runs with a known test weight W (SAE J376 calibrates with test
@@ -34,8 +35,9 @@ use moment_limiter::calibration::{CalibrationLearner, Learned, SteadyMotion};
 use moment_limiter::cycle::{Limiter, LimiterConfig};
 use moment_limiter::fault::Fault;
 use moment_limiter::io::{Frame, Measurement};
-use moment_limiter::sensor_lag::fit_lag;
+use moment_limiter::sensor_lag::{choose_sensor, fit_lag, SensorCandidate, SensorShape, SENSOR_SHAPES};
 use moment_limiter::tools::log_format::LogParser;
+use rayon::prelude::*;
 
 use moment_limiter::tools::config_file;
 
@@ -149,12 +151,16 @@ fn read_log(path: &Path, load_kg: f64) -> anyhow::Result<Log> {
 /// `lag_s`, and its own learner; `keep` keeps the measurements (for the
 /// residual pass) and warns of faulted samples.
 fn learn_log(log: &Log, lag_s: f64, keep: bool) -> anyhow::Result<Run> {
-    learn_log_with(log, lag_s, keep, SteadyMotion::standard())
+    let first_order = SensorCandidate { shape: SensorShape::FirstOrder, lag_s };
+    learn_log_with(log, first_order, keep, SteadyMotion::standard())
 }
 
-fn learn_log_with(log: &Log, lag_s: f64, keep: bool, steady: SteadyMotion<f64>) -> anyhow::Result<Run> {
+/// [`learn_log`] with the angle sensor taken as `sensor` (the lag search's
+/// candidates) and the samples of `steady`.
+fn learn_log_with(log: &Log, sensor: SensorCandidate<f64>, keep: bool, steady: SteadyMotion<f64>) -> anyhow::Result<Run> {
     let name = &log.name;
-    let config = LimiterConfig { angle_sensor_lag_s: lag_s, ..LimiterConfig::standard() };
+    let config = LimiterConfig { angle_sensor_lag_s: sensor.alignment_lag_s(), ..LimiterConfig::standard() };
+    let mut pressure_lag = sensor.pressure_lag();
     let mut limiter =
         Limiter::new(crate::model::thesis_model()?, config).map_err(|e| anyhow::anyhow!("{e}"))?;
     let mut learner = CalibrationLearner::<f64>::with_steady_motion(steady).loaded(log.load_kg);
@@ -163,7 +169,8 @@ fn learn_log_with(log: &Log, lag_s: f64, keep: bool, steady: SteadyMotion<f64>) 
     // The first faulted sample's line and fault: what the user looks up.
     let mut first_fault: Option<(u32, String)> = None;
     for (line, frame) in &log.frames {
-        let report = limiter.step_frame(frame);
+        let frame = pressure_lag.as_mut().map_or(*frame, |p| p.apply(*frame));
+        let report = limiter.step_frame(&frame);
         // An implausibly negative load is the limiter's verdict on an
         // uncalibrated estimate, and a run recorded from the middle of a move
         // has no weighing at rest to start from; the learner needs neither,
@@ -284,6 +291,18 @@ fn friction_opposes_the_motion(learned: &Learned<f64>) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// How `crane-sim calibrate` names the sensor shape that fitted best, with
+/// its steady-rate lag `lag_s`.
+fn shape_text(shape: SensorShape, lag_s: f64) -> String {
+    match shape {
+        SensorShape::FirstOrder => "a first-order lag fits best".to_string(),
+        SensorShape::Pendulum { damping } => format!(
+            "a pendulum of {:.2} Hz and damping {damping} fits best",
+            2.0 * damping / lag_s / (2.0 * std::f64::consts::PI)
+        ),
+    }
+}
+
 /// Runs the subcommand; returns the exit code.
 pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
     let known = known_loads(&args)?;
@@ -298,14 +317,24 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
     // (moment_limiter::sensor_lag), over the unloaded runs. Not the
     // known-load runs: the load's swing and bounce in their ramps, which the
     // model does not know, dominate their residual (with a 3 t test weight
-    // luffed in 30 s the search's minimum went to the 0.5 s bound).
-    let lag = fit_lag(LimiterConfig::<f64>::standard().angle_sensor_lag_s, |lag_s| {
-        let mut all = CalibrationLearner::<f64>::new();
-        for log in logs.iter().filter(|l| l.load_kg == 0.0) {
-            all.merge(&learn_log_with(log, lag_s, false, SteadyMotion::lag_search())?.learner);
-        }
-        anyhow::Ok(all.line_ssr())
-    })?;
+    // luffed in 30 s the search's minimum went to the 0.5 s bound). Each
+    // sensor shape is its own search, so they run side by side.
+    let default_lag_s = LimiterConfig::<f64>::standard().angle_sensor_lag_s;
+    let fits = SENSOR_SHAPES
+        .par_iter()
+        .map(|&shape| {
+            let fit = fit_lag(default_lag_s, |lag_s| {
+                let mut all = CalibrationLearner::<f64>::new();
+                for log in logs.iter().filter(|l| l.load_kg == 0.0) {
+                    all.merge(&learn_log_with(log, SensorCandidate { shape, lag_s }, false, SteadyMotion::lag_search())?.learner);
+                }
+                anyhow::Ok(all.line_ssr())
+            })?;
+            anyhow::Ok((shape, fit))
+        })
+        .collect::<anyhow::Result<Vec<_>>>()?;
+    let sensor = choose_sensor(&fits).context("no sensor shape searched")?;
+    let lag = sensor.lag;
     let mut runs = Vec::new();
     for log in &logs {
         runs.push(learn_log(log, lag.lag_s, true)?);
@@ -457,8 +486,9 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
     if lag.observable {
         writeln!(
             out,
-            "  angle sensor lag {:.3} s learned (first-order equivalent; residual rms {:.1} N, +{:.0} % at {:.2} s off, {:.1} N at the default {:.3} s)",
+            "  angle sensor lag {:.3} s learned ({}; first-order equivalent on a steady rate; residual rms {:.1} N, +{:.0} % at {:.2} s off, {:.1} N at the default {:.3} s)",
             lag.lag_s,
+            shape_text(sensor.shape, lag.lag_s),
             lag.rms_n,
             lag.rms_rise * 100.0,
             moment_limiter::sensor_lag::LAG_PROBE_S,

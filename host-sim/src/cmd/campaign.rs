@@ -399,7 +399,7 @@ mod limiter_adapter {
     use crane_model::loads::thesis_modes::thesis_load_model_f32;
     use moment_limiter::calibration::{CalibrationLearner, SteadyMotion};
     use moment_limiter::cycle::{Limiter, LimiterConfig};
-    use moment_limiter::sensor_lag::fit_lag;
+    use moment_limiter::sensor_lag::{fit_sensor, SensorCandidate, SensorShape};
     use moment_limiter::io::Frame;
     use moment_limiter::load_estimate::Calibration;
     use moment_limiter::clock::Ticks;
@@ -436,14 +436,16 @@ mod limiter_adapter {
         Frame { t, p1_bar: r.p1_bar as f32, p2_bar: r.p2_bar as f32, boom_angle_deg: r.boom_angle_deg as f32 }
     }
 
-    /// The learner of `logs` run through the limiter with the angle sensor's lag `lag_s`.
-    fn learn(logs: &[&[SynthRow]], lag_s: f32, steady: SteadyMotion<f32>) -> anyhow::Result<CalibrationLearner<f32>> {
+    /// The learner of `logs` run through the limiter with the angle sensor taken as `sensor`.
+    fn learn(logs: &[&[SynthRow]], sensor: SensorCandidate<f32>, steady: SteadyMotion<f32>) -> anyhow::Result<CalibrationLearner<f32>> {
         let mut learner = CalibrationLearner::<f32>::with_steady_motion(steady);
         for rows in logs {
-            let config = LimiterConfig { angle_sensor_lag_s: lag_s, ..LimiterConfig::standard() };
+            let config = LimiterConfig { angle_sensor_lag_s: sensor.alignment_lag_s(), ..LimiterConfig::standard() };
             let mut lim = Limiter::new(thesis_load_model_f32(), config).map_err(|e| anyhow::anyhow!("{e}"))?;
+            let mut pressure_lag = sensor.pressure_lag();
             for r in rows.iter() {
-                let rep = lim.step_frame(&frame(r));
+                let f = frame(r);
+                let rep = lim.step_frame(&pressure_lag.as_mut().map_or(f, |p| p.apply(f)));
                 if let (None, Some(m)) = (rep.fault, rep.measurement) {
                     learner.observe(lim.model(), &m).map_err(|e| anyhow::anyhow!("calibration: {e}"))?;
                 }
@@ -457,10 +459,12 @@ mod limiter_adapter {
     /// calibrate`: the angle sensor's lag first, then the friction law with
     /// it), and whether the lag was observable.
     pub fn calibrate(logs: &[&[SynthRow]]) -> anyhow::Result<(CraneCalibration, bool)> {
-        let lag = fit_lag(LimiterConfig::<f32>::standard().angle_sensor_lag_s, |lag_s| {
-            Ok::<_, anyhow::Error>(learn(logs, lag_s, SteadyMotion::lag_search())?.line_ssr())
-        })?;
-        let cal = learn(logs, lag.lag_s, SteadyMotion::standard())?
+        let lag = fit_sensor(LimiterConfig::<f32>::standard().angle_sensor_lag_s, |sensor| {
+            Ok::<_, anyhow::Error>(learn(logs, sensor, SteadyMotion::lag_search())?.line_ssr())
+        })?
+        .lag;
+        let first_order = SensorCandidate { shape: SensorShape::FirstOrder, lag_s: lag.lag_s };
+        let cal = learn(logs, first_order, SteadyMotion::standard())?
             .finish(50)
             .map_err(|e| anyhow::anyhow!("calibration: {e:?}"))?;
         Ok((Calibration { angle_sensor_lag_s: Some(lag.lag_s), ..cal }, lag.observable))
