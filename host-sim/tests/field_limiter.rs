@@ -47,7 +47,7 @@ use crane_model::sim::simulation::{Direction, Maneuver, Program, Segment};
 use crane_model::loads::thesis_modes::thesis_load_model_f32;
 use crane_model::Real;
 use moment_limiter::calibration::{CalibrationLearner, SteadyMotion};
-use moment_limiter::sensor_lag::{fit_sensor, SensorCandidate, SensorShape};
+use moment_limiter::sensor_lag::{fit_sensor, SensorCandidate};
 use moment_limiter::clock::Ticks;
 use moment_limiter::cycle::{Limiter, LimiterConfig};
 use moment_limiter::io::Frame;
@@ -333,8 +333,7 @@ fn calibration_with<T: Real, M: HookLoadModel<T> + Clone>(model_l: &M, seals: Se
             let mut lim = Limiter::new(model_l.clone(), config).unwrap();
             let mut pressure_lag = sensor.pressure_lag();
             for r in rows {
-                let f = frame::<T>(r);
-                let rep = lim.step_frame(&pressure_lag.as_mut().map_or(f, |p| p.apply(f)));
+                let rep = lim.step_frame(&pressure_lag.apply(frame::<T>(r)));
                 if let (None, Some(me)) = (rep.fault, rep.measurement) {
                     learner.observe(model_l, &me).unwrap();
                 }
@@ -349,7 +348,7 @@ fn calibration_with<T: Real, M: HookLoadModel<T> + Clone>(model_l: &M, seals: Se
     } else {
         default
     };
-    let cal = learn(SensorCandidate { shape: SensorShape::FirstOrder, lag_s: lag }, SteadyMotion::standard()).finish(50).unwrap();
+    let cal = learn(SensorCandidate::first_order(lag), SteadyMotion::standard()).finish(50).unwrap();
     println!(
         "calibration ({seals:?} seals, sensor {:?} {:?}): lag {lag:.3} s, up {:.0} N + {:.4}·F, down {:.0} N + {:.4}·F, offset {:.0} N",
         SENSOR_LAG_S.with(|l| l.get()),

@@ -238,6 +238,11 @@ pub struct SensorCandidate<T> {
 }
 
 impl<T: Real> SensorCandidate<T> {
+    /// A first-order lag of `lag_s` (s): what the limiter itself aligns with.
+    pub fn first_order(lag_s: T) -> Self {
+        Self { shape: SensorShape::FirstOrder, lag_s }
+    }
+
     /// The lag the limiter's own time alignment takes while this candidate
     /// is tried (s): the candidate's for a first-order lag; none for a
     /// pendulum, whose response [`Self::pressure_lag`] puts on the
@@ -249,56 +254,62 @@ impl<T: Real> SensorCandidate<T> {
         }
     }
 
-    /// The pendulum's response on the pressures, or `None` (a first-order
-    /// candidate, or no lag at all).
-    pub fn pressure_lag(&self) -> Option<PressureLag<T>> {
+    /// What the candidate puts on the runs' pressures: the pendulum's
+    /// response, or nothing (a first-order candidate, or no lag at all).
+    pub fn pressure_lag(&self) -> PressureLag<T> {
         match self.shape {
-            SensorShape::Pendulum { damping } if self.lag_s > T::lit(0.0) => Some(PressureLag::new(self.lag_s, T::lit(damping))),
-            _ => None,
+            SensorShape::Pendulum { damping } if self.lag_s > T::lit(0.0) => PressureLag::pendulum(self.lag_s, T::lit(damping)),
+            _ => PressureLag::none(),
         }
     }
 }
 
 /// A pendulum's response put on both pressures of a calibration run, so
 /// that force and angle go through the same sensor while a pendulum
-/// candidate is tried (the limiter's own alignment is first-order).
-/// Trapezoidal rule on (x, x'), unconditionally stable at any step and
-/// exact in the steady-rate lag; it starts settled on the first frame.
+/// candidate is tried (the limiter's own alignment is first-order), or
+/// nothing. Trapezoidal rule on (x, x'), unconditionally stable at any
+/// step and exact in the steady-rate lag; it starts settled on the first
+/// frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PressureLag<T> {
-    omega: T,
-    damping: T,
-    /// Per pressure: output, its rate and the last input; `None` before the
+    /// ω_n and ζ; `None`: the pressures pass unchanged.
+    pendulum: Option<(T, T)>,
+    /// The last frame's time and each pressure's state; `None` before the
     /// first frame.
-    state: Option<[(T, T, T); 2]>,
-    last: Option<crate::clock::Ticks>,
+    state: Option<(crate::clock::Ticks, [PendulumState<T>; 2])>,
 }
+
+/// One pressure through the pendulum: its output, the output's rate and
+/// the last input.
+type PendulumState<T> = (T, T, T);
 
 impl<T: Real> PressureLag<T> {
     /// A pendulum of damping `damping` whose lag on a steady rate is
     /// `lag_s` (> 0): ω_n = 2ζ/lag.
-    pub fn new(lag_s: T, damping: T) -> Self {
+    pub fn pendulum(lag_s: T, damping: T) -> Self {
         Self {
-            omega: T::lit(2.0) * damping / lag_s,
-            damping,
+            pendulum: Some((T::lit(2.0) * damping / lag_s, damping)),
             state: None,
-            last: None,
         }
+    }
+
+    /// No response: every frame passes unchanged.
+    pub fn none() -> Self {
+        Self { pendulum: None, state: None }
     }
 
     /// The frame with its pressures through the pendulum's response.
     pub fn apply(&mut self, frame: Frame<T>) -> Frame<T> {
-        let dt = match self.last {
-            Some(prev) => T::from_count(frame.t.since(prev)) * T::lit(1e-6),
-            None => T::lit(0.0),
+        let Some((w, z)) = self.pendulum else {
+            return frame;
         };
-        self.last = Some(frame.t);
-        let inputs = [frame.p1_bar, frame.p2_bar];
-        let mut state = self.state.unwrap_or([(frame.p1_bar, T::lit(0.0), frame.p1_bar), (frame.p2_bar, T::lit(0.0), frame.p2_bar)]);
-        let (w, z) = (self.omega, self.damping);
+        let (dt, mut state) = match self.state {
+            Some((prev, state)) => (T::from_count(frame.t.since(prev)) * T::lit(1e-6), state),
+            None => (T::lit(0.0), [(frame.p1_bar, T::lit(0.0), frame.p1_bar), (frame.p2_bar, T::lit(0.0), frame.p2_bar)]),
+        };
         let half = dt * T::lit(0.5);
         let det = T::lit(1.0) + dt * z * w + half * half * w * w;
-        for ((x, v, u0), u1) in state.iter_mut().zip(inputs) {
+        for ((x, v, u0), u1) in state.iter_mut().zip([frame.p1_bar, frame.p2_bar]) {
             // (I − h·A/2)·s₁ = (I + h·A/2)·s₀ + h/2·B·(u₀ + u₁).
             let r0 = *x + half * *v;
             let r1 = *v + half * (w * w * (*u0 + u1 - *x) - T::lit(2.0) * z * w * *v);
@@ -307,7 +318,7 @@ impl<T: Real> PressureLag<T> {
             *v = v1;
             *u0 = u1;
         }
-        self.state = Some(state);
+        self.state = Some((frame.t, state));
         let [(p1, ..), (p2, ..)] = state;
         Frame { p1_bar: p1, p2_bar: p2, ..frame }
     }
@@ -417,7 +428,7 @@ mod tests {
         // A ramp of 10 bar/s at 100 Hz: once settled the output is the input
         // 2ζ/ω_n earlier, to the trapezoidal rule's exactness.
         for (lag, zeta) in [(0.159f64, 0.5f64), (0.111, 0.7), (0.3, 0.9)] {
-            let mut pl = PressureLag::new(lag, zeta);
+            let mut pl = PressureLag::pendulum(lag, zeta);
             let mut last = frame(0, 0.0);
             for k in 0..1000u32 {
                 let t = f64::from(k) * 0.01;
@@ -431,7 +442,7 @@ mod tests {
         // exp(−π·ζ/√(1 − ζ²)) = 16.3 %, at t = π/(ω_n·√(1 − ζ²)).
         let (lag, zeta) = (0.159f64, 0.5f64);
         let wn = 2.0 * zeta / lag;
-        let mut pl = PressureLag::new(lag, zeta);
+        let mut pl = PressureLag::pendulum(lag, zeta);
         pl.apply(frame(0, 0.0));
         let peak = (1..2000u32).map(|k| pl.apply(frame(k * 1000, 1.0)).p1_bar).fold(f64::MIN, f64::max);
         let expected = 1.0 + (-core::f64::consts::PI * zeta / (1.0 - zeta * zeta).sqrt()).exp();
@@ -458,12 +469,17 @@ mod tests {
         let chosen = choose_sensor(&fits).unwrap();
         assert!(chosen.shape == SensorShape::FirstOrder && !chosen.lag.observable && chosen.lag.lag_s == 0.111);
         assert!(choose_sensor::<f64>(&[]).is_none());
-        // A candidate runs the chain without alignment when it lags the pressures.
+        // A candidate runs the chain without alignment when it lags the
+        // pressures, and leaves them unchanged when it does not.
+        let (f0, f1) = (frame(0, 0.0), frame(10_000, 1.0));
         let c = SensorCandidate { shape: p(0.7), lag_s: 0.1 };
-        assert!(c.alignment_lag_s() == 0.0 && c.pressure_lag().is_some());
-        let c = SensorCandidate { shape: SensorShape::FirstOrder, lag_s: 0.1 };
-        assert!(c.alignment_lag_s() == 0.1 && c.pressure_lag().is_none());
-        assert!(SensorCandidate { shape: p(0.7), lag_s: 0.0 }.pressure_lag().is_none());
+        let mut pl = c.pressure_lag();
+        assert!(c.alignment_lag_s() == 0.0 && pl.apply(f0) == f0 && pl.apply(f1).p1_bar < 0.5);
+        let c = SensorCandidate::first_order(0.1);
+        let mut pl = c.pressure_lag();
+        assert!(c.alignment_lag_s() == 0.1 && pl.apply(f0) == f0 && pl.apply(f1) == f1);
+        let mut pl = SensorCandidate { shape: p(0.7), lag_s: 0.0 }.pressure_lag();
+        assert!(pl.apply(f0) == f0 && pl.apply(f1) == f1);
     }
 
 }

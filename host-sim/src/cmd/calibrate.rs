@@ -2,9 +2,9 @@
 //!
 //! Learns the angle sensor's lag (`moment_limiter::sensor_lag`, from the
 //! unloaded runs: searched as a first-order lag and as pendulums of three
-//! dampings, the lag on a steady rate of the shape that fits best), then the cylinder's seal friction law per direction,
-//! friction = a + b·|F|, and the force offset from unloaded boom-up and
-//! boom-down logs and,
+//! dampings, the lag on a steady rate of the shape that fits best), then
+//! the cylinder's seal friction law per direction, friction = a + b·|F|,
+//! and the force offset from unloaded boom-up and boom-down logs and,
 //! when given, runs with a known test weight W (SAE J376 calibrates with test
 //! weights): each log is run through the limiter's own signal chain
 //! (filters, direction of motion) with no calibration, and
@@ -151,8 +151,7 @@ fn read_log(path: &Path, load_kg: f64) -> anyhow::Result<Log> {
 /// `lag_s`, and its own learner; `keep` keeps the measurements (for the
 /// residual pass) and warns of faulted samples.
 fn learn_log(log: &Log, lag_s: f64, keep: bool) -> anyhow::Result<Run> {
-    let first_order = SensorCandidate { shape: SensorShape::FirstOrder, lag_s };
-    learn_log_with(log, first_order, keep, SteadyMotion::standard())
+    learn_log_with(log, SensorCandidate::first_order(lag_s), keep, SteadyMotion::standard())
 }
 
 /// [`learn_log`] with the angle sensor taken as `sensor` (the lag search's
@@ -169,8 +168,7 @@ fn learn_log_with(log: &Log, sensor: SensorCandidate<f64>, keep: bool, steady: S
     // The first faulted sample's line and fault: what the user looks up.
     let mut first_fault: Option<(u32, String)> = None;
     for (line, frame) in &log.frames {
-        let frame = pressure_lag.as_mut().map_or(*frame, |p| p.apply(*frame));
-        let report = limiter.step_frame(&frame);
+        let report = limiter.step_frame(&pressure_lag.apply(*frame));
         // An implausibly negative load is the limiter's verdict on an
         // uncalibrated estimate, and a run recorded from the middle of a move
         // has no weighing at rest to start from; the learner needs neither,

@@ -399,7 +399,7 @@ mod limiter_adapter {
     use crane_model::loads::thesis_modes::thesis_load_model_f32;
     use moment_limiter::calibration::{CalibrationLearner, SteadyMotion};
     use moment_limiter::cycle::{Limiter, LimiterConfig};
-    use moment_limiter::sensor_lag::{fit_sensor, SensorCandidate, SensorShape};
+    use moment_limiter::sensor_lag::{fit_sensor, SensorCandidate};
     use moment_limiter::io::Frame;
     use moment_limiter::load_estimate::Calibration;
     use moment_limiter::clock::Ticks;
@@ -444,8 +444,7 @@ mod limiter_adapter {
             let mut lim = Limiter::new(thesis_load_model_f32(), config).map_err(|e| anyhow::anyhow!("{e}"))?;
             let mut pressure_lag = sensor.pressure_lag();
             for r in rows.iter() {
-                let f = frame(r);
-                let rep = lim.step_frame(&pressure_lag.as_mut().map_or(f, |p| p.apply(f)));
+                let rep = lim.step_frame(&pressure_lag.apply(frame(r)));
                 if let (None, Some(m)) = (rep.fault, rep.measurement) {
                     learner.observe(lim.model(), &m).map_err(|e| anyhow::anyhow!("calibration: {e}"))?;
                 }
@@ -463,8 +462,7 @@ mod limiter_adapter {
             Ok::<_, anyhow::Error>(learn(logs, sensor, SteadyMotion::lag_search())?.line_ssr())
         })?
         .lag;
-        let first_order = SensorCandidate { shape: SensorShape::FirstOrder, lag_s: lag.lag_s };
-        let cal = learn(logs, first_order, SteadyMotion::standard())?
+        let cal = learn(logs, SensorCandidate::first_order(lag.lag_s), SteadyMotion::standard())?
             .finish(50)
             .map_err(|e| anyhow::anyhow!("calibration: {e:?}"))?;
         Ok((Calibration { angle_sensor_lag_s: Some(lag.lag_s), ..cal }, lag.observable))
