@@ -2172,9 +2172,23 @@ fn a_load_added_at_rest_on_the_paid_out_rope_f32() {
 /// Making every rope prove itself again at rest once the seals are released
 /// removed those, but a rope then votes only 2.5–3 s after the stop, and
 /// 90 % added 3 s after a stop behind a 0.3 s sensor was seen after 1.8 s.
-/// What would close it: a friction share that leaves the force as the
-/// filter lets it go (a stop detector that does not wait for the filtered
-/// rate's tail), so that no stop moves the ropes' readings.
+/// A friction share that leaves the force as the filter lets it go was
+/// tried next and not kept (measured): after a raise, from the cycle the
+/// stop is seen, no more friction taken off than the force filter's share
+/// of a step still to pass, the stop taken its delay n·τ (0.53 s) before it
+/// is seen. It cut 40° → 80°, 20° → 70° (constant friction) and 50° → 80°
+/// here at +0.81–0.88 s, and every `field_limiter` test passed; but the
+/// campaign's seals release over 0–1 s, where this share reads high: over
+/// seeds 1–9, 2 early cuts (seed 5 #2572 at true u 0.882, seed 6 #4006 at
+/// 0.873) and a false OVERLOAD (seed 7 #4988, true u ≤ 0.818), all at rest
+/// after raises to 83–84.5° whose seals released over 0.72–0.99 s. Setting
+/// the limiter's `seal_release_s` to 0.01 s gives the same cuts here, so
+/// the gap is the seals' release: the limiter assumes seals that hold
+/// their friction until the filtered rate shows the stop and release it
+/// over 0.5 s, and these logs' seals let it go at the stop. What would
+/// close it: the calibration learning the seals' release time from its
+/// runs' stops, and the share following the filter's response to that
+/// release.
 #[test]
 #[ignore = "KNOWN GAP: a load added 3 s after a raise to 70-80 deg on the paid-out rope is cut only when the mean over one swing period weighs it (6.1-14.3 s after; 1.01 s after 20-50 deg)"]
 fn a_load_added_at_rest_on_the_paid_out_rope_soon_after_a_raise_known_gap() {
