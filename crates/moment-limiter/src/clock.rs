@@ -97,6 +97,17 @@ pub enum ClockFault {
     Backwards,
 }
 
+impl ClockFault {
+    /// The time that passed (s): a gap's step; none for a stalled clock or
+    /// one that went backwards, whose step cannot be told.
+    pub fn elapsed_s<T: Real>(&self) -> T {
+        match self {
+            ClockFault::Gap { elapsed_us } => micros_as_seconds(*elapsed_us),
+            ClockFault::Stalled | ClockFault::Backwards => T::lit(0.0),
+        }
+    }
+}
+
 impl core::fmt::Display for ClockFault {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         match self {

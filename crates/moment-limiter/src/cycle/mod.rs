@@ -332,6 +332,14 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         // Stage 1 (history checks) and stages 2–4.
         let mut measurement = None;
         let mut estimate = None;
+        // A clock's gap is time the boom went on moving: the chain bridges
+        // it, or restarts after it, as after bad cycles of that length (see
+        // PAUSE_GAP_S). Taken as no time, a logger's 2 s dropout in a raise
+        // at 4.3 °/s ran 8.7° of the angle into the filters in one step: a
+        // rate of 18.7 °/s and accelerations of +60 and −26 °/s², whose J·θ̈
+        // swung the force by −180 to +100 kN, and a kick to the rope bank's
+        // pendulums.
+        let clock_gap_s = clock.as_ref().err().map_or(T::lit(0.0), |c| c.elapsed_s());
         let fault = if let Err(c) = clock {
             Some(Fault::Clock(c))
         } else if self.output_failed {
@@ -342,6 +350,12 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         let fault = match (fault, readings) {
             (Some(f), _) => {
                 self.interrupt_signal_chain();
+                // The part of the gap the angle's side has not gone
+                // through grows by it too (see `measure`).
+                self.gap_s += clock_gap_s;
+                if let Some(g) = self.angle_gap_s.as_mut() {
+                    *g += clock_gap_s;
+                }
                 Some(f)
             }
             (None, Err((sensor, angle))) => {
