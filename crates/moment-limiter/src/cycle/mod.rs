@@ -177,11 +177,12 @@ pub struct Limiter<T, M> {
     moving_for_s: T,
     bank: Option<StaticLoadBank<T>>,
     /// The gap in the good readings (s): the bad cycles since the last
-    /// measurement, which the signal chain bridges or restarts after.
+    /// measurement and the clock's gaps among them, which the signal chain
+    /// bridges or restarts after.
     gap_s: T,
     /// Bad cycles came since the last measurement (see [`PAUSE_GAP_S`]): a
-    /// clock fault's cycle adds nothing to `gap_s`, so the gap alone cannot
-    /// tell.
+    /// stalled clock's cycle, or one that went backwards, adds nothing to
+    /// `gap_s` (a clock's gap adds its step), so the gap alone cannot tell.
     interrupted: bool,
     /// The last good sample's piston force (N) and boom angle (°, offset
     /// removed): where a short gap is bridged from.
