@@ -858,10 +858,11 @@ impl<T: Real> StaticLoadBank<T> {
     /// kept too: the averages start again from it, as a rope that weighs
     /// again starts from W_slow (the load does not change in the air; a
     /// heavier one is W_fast's, and a lighter one is followed at the
-    /// averages' pace). Started from the settled filters' W_k alone, a
-    /// 15 s lowering past the rated radius read its load 15–40 % low for
-    /// seconds after a 2 s logger dropout, and the overload passed true
-    /// u 1.05 uncut (`host-sim` test `a_dropout_in_a_lowering_keeps_the_bounds_*`).
+    /// averages' pace). Started from the settled filters' W_k alone, the
+    /// averages took up the ropes that read a lowering's swing low: after
+    /// a 2 s logger dropout, 15 of the 15 s lowerings past the rated radius
+    /// were still NORMAL or WARNING at true u 1.05 (`host-sim` test
+    /// `a_dropout_in_a_lowering_keeps_the_bounds_*`).
     pub fn restart_averages(&mut self) {
         // The first call of a restart keeps the weighing; the later ones,
         // while the filters settle, keep that one.
