@@ -845,6 +845,79 @@ fn a_dropout_in_a_lowering_keeps_the_bounds_f32() {
     a_dropout_in_a_lowering_keeps_the_bounds(Precision::F32);
 }
 
+/// A load that leaves the ground during a logger's dropout: the weighing
+/// kept over a restart is the part of the load taken up before the gap,
+/// and the load read after it must still be the whole one. Lift-offs at
+/// 50° and 80°, taken up in 2 s (from 2 s to 4 s), every rope, both
+/// friction laws, with 3.0–5.0 s (restarted) or 3.5–4.48 s (bridged)
+/// missing. Returns the 110 % cases that are not cut from the dropout's
+/// FAULT on (a sample after the gap neither FAULT nor OVERLOAD) and the 90 %
+/// cases with an OVERLOAD, with its true u.
+fn lift_offs_in_a_dropout(precision: Precision) -> (Vec<String>, Vec<(String, f64)>) {
+    let (mut released, mut cut_at_90) = (Vec::new(), Vec::new());
+    for angle in [50.0f64, 80.0] {
+        let rated = rated_kg(angle.to_radians());
+        for rope in ROPES {
+            for seals in SEALS {
+                for frac in [0.9, 1.1] {
+                    let sc = Scenario::lift_off(angle, frac * rated, rope, seals, 2.0, 5);
+                    let rows = sc.rows();
+                    for (start, end) in [(3.0, 5.0), (3.5, 4.48)] {
+                        let holed: Vec<SynthRow> = rows.iter().filter(|r| !(start..end).contains(&r.t_s)).cloned().collect();
+                        let pts = replay_rows(&holed, sc.seals, precision);
+                        let name = format!("{} without {start}..{end} s", sc.name());
+                        if frac > 1.0 {
+                            if let Some(q) = pts.iter().find(|p| p.t >= end && !cut(p)) {
+                                released.push(format!("{name}: {:?} at {:.2} s", q.state, q.t));
+                            }
+                        } else if let Some((t, u)) = first_overload(&pts) {
+                            println!("{name}: OVERLOAD at {t:.2} s, true u {u:.3}");
+                            cut_at_90.push((name, u));
+                        }
+                    }
+                }
+            }
+        }
+    }
+    println!("{precision:?}: lift-offs in a dropout: 110 % released {}, 90 % cut {}", released.len(), cut_at_90.len());
+    (released, cut_at_90)
+}
+
+/// [`lift_offs_in_a_dropout`]: 110 % is never released, and 90 % is cut
+/// only where measured: the 3 m rope at 80° whose load left the ground in
+/// the 2 s gap (both friction laws, f64 and f32), at the FAULT's end
+/// (6.01 s) at true u 0.900. There the boom's give swung the load while
+/// the chain saw nothing, the rope bank restarted without that swing
+/// (`moment_limiter::static_load`, "A lift-off: the boom's give swings the
+/// load"), and the swing's crest read as load: an early cut (before
+/// 1/1.1), as before the restart kept the bank's weighing.
+fn lift_offs_in_a_dropout_stay_as_measured(precision: Precision) {
+    let (released, cut_at_90) = lift_offs_in_a_dropout(precision);
+    assert!(released.is_empty(), "{released:#?}");
+    let unknown: Vec<&(String, f64)> = cut_at_90.iter().filter(|(n, u)| !(n.starts_with("80->80") && n.contains("Held(0.0)") && n.ends_with("without 3..5 s") && *u >= 0.89)).collect();
+    assert!(unknown.is_empty(), "{unknown:#?}");
+}
+
+#[test]
+fn lift_offs_in_a_dropout_stay_as_measured_f64() {
+    lift_offs_in_a_dropout_stay_as_measured(Precision::F64);
+}
+
+#[test]
+fn lift_offs_in_a_dropout_stay_as_measured_f32() {
+    lift_offs_in_a_dropout_stay_as_measured(Precision::F32);
+}
+
+/// KNOWN GAP (see [`lift_offs_in_a_dropout_stay_as_measured`]): 90 % whose
+/// load leaves the ground in a 2 s dropout, on the 3 m rope at 80°, is an
+/// OVERLOAD at true u 0.900.
+#[test]
+#[ignore = "KNOWN GAP: 90 % lifted off on a 3 m rope at 80 deg while 2 s of samples are missing is cut at true u 0.900 as the FAULT ends"]
+fn lift_offs_in_a_dropout_known_gap() {
+    let (released, cut_at_90) = lift_offs_in_a_dropout(Precision::F64);
+    assert!(released.is_empty() && cut_at_90.is_empty(), "{released:#?} {cut_at_90:#?}");
+}
+
 /// Lowerings faster than the thesis's 4 °/s: 80° → 20° and 70° → 20° in
 /// 10 s (6 and 5 °/s). Cut between true u 1/1.1 and 1.05: measured (f64)
 /// at 0.957–0.990 and 0.962–0.990.
