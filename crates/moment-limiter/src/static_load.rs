@@ -729,11 +729,9 @@ pub struct StaticLoadBank<T> {
     /// W_slow of the last cycle (kg), where averages that start begin.
     slow_kg: Option<T>,
     /// W_slow from before the force was interrupted (kg): where the
-    /// averages start again once the restarted filters have settled (see
-    /// [`Self::restart_averages`]).
+    /// averages start again while the restarted filters settle (see
+    /// [`Self::restart_averages`]); dropped once the bank weighs again.
     kept_kg: Option<T>,
-    /// [`Self::restart_averages`] ran since the last update.
-    restarting: bool,
     /// Time left to follow a load added at rest (s; see [`crate::load_jump`]).
     follow_s: T,
     /// At rest after a move of at least [`MOVE_FOR_HOLD_S`]: where a load
@@ -824,7 +822,6 @@ impl<T: Real> StaticLoadBank<T> {
             slow_at_stop: None,
             slow_kg: None,
             kept_kg: None,
-            restarting: false,
             follow_s: T::lit(0.0),
             after_move: false,
             light_at_stop: false,
@@ -867,7 +864,6 @@ impl<T: Real> StaticLoadBank<T> {
         // The first call of a restart keeps the weighing; the later ones,
         // while the filters settle, keep that one.
         self.kept_kg = self.kept_kg.or(self.slow_kg);
-        self.restarting = true;
         for h in self.hypotheses.iter_mut() {
             h.slow_kg = None;
             h.jump = Consistency::new();
@@ -1246,11 +1242,15 @@ impl<T: Real> StaticLoadBank<T> {
         // is W_fast's).
         let averaging = still || all_weigh;
         // After a restart the averages start from the weighing kept over
-        // it (see `restart_averages`), until the filters have settled.
-        let prev_slow = self.slow_kg.or(self.kept_kg);
-        if !core::mem::replace(&mut self.restarting, false) {
-            self.kept_kg = None;
-        }
+        // it (see `restart_averages`) until the bank weighs again: each
+        // restart while the filters settle empties W_slow once more.
+        let prev_slow = match self.slow_kg {
+            Some(w) => {
+                self.kept_kg = None;
+                Some(w)
+            }
+            None => self.kept_kg,
+        };
         let doubted = self.weighing_doubted;
         for (h, factor) in self.hypotheses.iter_mut().zip(factors.iter()) {
             let Some(f) = *factor else {
