@@ -797,13 +797,19 @@ fn lowerings_on(precision: Precision, moves: &[(f64, f64, f64, f64)], ropes: &[R
 /// bridges it (up to 1 s) or restarts after it. Returns the bound's
 /// failures ([`lowering_bound_failures`]) and the highest true u at the
 /// first cut (OVERLOAD or FAULT) after the dropout's FAULT has cleared.
+/// Replays `rows` of a crane with `seals` without the samples from `start`
+/// to `end` (s): a logger's dropout.
+fn replay_with_dropout(rows: &[SynthRow], (start, end): (f64, f64), seals: Seals, precision: Precision) -> Vec<Point> {
+    let holed: Vec<SynthRow> = rows.iter().filter(|r| !(start..end).contains(&r.t_s)).cloned().collect();
+    replay_rows(&holed, seals, precision)
+}
+
 fn dropouts_in_lowerings(precision: Precision, dropouts: &[(f64, f64)]) -> (Vec<String>, f64) {
     let (mut failures, mut worst) = (Vec::new(), 0.0f64);
     for sc in lowering_scenarios(&[(80.0, 20.0, 15.0, 1.0)], &ROPES, &SEALS) {
         let rows = sc.rows();
         for &(start, len) in dropouts {
-            let holed: Vec<SynthRow> = rows.iter().filter(|r| !(start..start + len).contains(&r.t_s)).cloned().collect();
-            let pts = replay_rows(&holed, sc.seals, precision);
+            let pts = replay_with_dropout(&rows, (start, start + len), sc.seals, precision);
             let name = format!("{} without {start}..{:.2} s", sc.name(), start + len);
             failures.extend(lowering_bound_failures(&name, &pts));
             // The first cut after the dropout's FAULT cleared (none while
@@ -855,27 +861,18 @@ fn a_dropout_in_a_lowering_keeps_the_bounds_f32() {
 /// cases with an OVERLOAD, with its true u.
 fn lift_offs_in_a_dropout(precision: Precision) -> (Vec<String>, Vec<(String, f64)>) {
     let (mut released, mut cut_at_90) = (Vec::new(), Vec::new());
-    for angle in [50.0f64, 80.0] {
-        let rated = rated_kg(angle.to_radians());
-        for rope in ROPES {
-            for seals in SEALS {
-                for frac in [0.9, 1.1] {
-                    let sc = Scenario::lift_off(angle, frac * rated, rope, seals, 2.0, 5);
-                    let rows = sc.rows();
-                    for (start, end) in [(3.0, 5.0), (3.5, 4.48)] {
-                        let holed: Vec<SynthRow> = rows.iter().filter(|r| !(start..end).contains(&r.t_s)).cloned().collect();
-                        let pts = replay_rows(&holed, sc.seals, precision);
-                        let name = format!("{} without {start}..{end} s", sc.name());
-                        if frac > 1.0 {
-                            if let Some(q) = pts.iter().find(|p| p.t >= end && !cut(p)) {
-                                released.push(format!("{name}: {:?} at {:.2} s", q.state, q.t));
-                            }
-                        } else if let Some((t, u)) = first_overload(&pts) {
-                            println!("{name}: OVERLOAD at {t:.2} s, true u {u:.3}");
-                            cut_at_90.push((name, u));
-                        }
-                    }
+    for (sc, over) in lift_off_scenarios(&[50.0, 80.0], &[2.0], &ROPES) {
+        let rows = sc.rows();
+        for (start, end) in [(3.0, 5.0), (3.5, 4.48)] {
+            let pts = replay_with_dropout(&rows, (start, end), sc.seals, precision);
+            let name = format!("{} without {start}..{end} s", sc.name());
+            if over {
+                if let Some(q) = pts.iter().find(|p| p.t >= end && !cut(p)) {
+                    released.push(format!("{name}: {:?} at {:.2} s", q.state, q.t));
                 }
+            } else if let Some((t, u)) = first_overload(&pts) {
+                println!("{name}: OVERLOAD at {t:.2} s, true u {u:.3}");
+                cut_at_90.push((name, u));
             }
         }
     }
@@ -1479,32 +1476,42 @@ fn lift_offs_over(precision: Precision, angles: &[f64], take_ups: &[f64]) -> (Ve
     lift_offs_on(precision, angles, take_ups, &ROPES)
 }
 
-/// [`lift_offs_over`] on `ropes`.
-fn lift_offs_on(precision: Precision, angles: &[f64], take_ups: &[f64], ropes: &[Rope]) -> (Vec<String>, f64) {
-    let (mut failures, mut worst) = (Vec::new(), 0.0f64);
+/// The lift-offs at `angles` taken up in `take_ups` s on `ropes`, both
+/// friction laws, of 90 % and 110 % of the rated load there (noise draw
+/// 5), each with whether it is over rated (must be cut).
+fn lift_off_scenarios(angles: &[f64], take_ups: &[f64], ropes: &[Rope]) -> Vec<(Scenario, bool)> {
+    let mut out = Vec::new();
     for &angle in angles {
         let rated = rated_kg(angle.to_radians());
         for &take_up in take_ups {
             for &rope in ropes {
                 for seals in SEALS {
-                    for (frac, must) in [(0.9, false), (1.1, true)] {
-                        let sc = Scenario::lift_off(angle, frac * rated, rope, seals, take_up, 5);
-                        let pts = replay(&sc, precision);
-                        let off = HOLD_BEFORE_S + take_up;
-                        match (must, first_overload(&pts)) {
-                            (false, Some((t, _))) => failures.push(format!("{}: OVERLOAD at {t:.2} s", sc.name())),
-                            (true, None) => failures.push(format!("{}: no OVERLOAD", sc.name())),
-                            (true, Some((t, _))) => {
-                                worst = worst.max(t - off);
-                                if t > off + 1.0 {
-                                    failures.push(format!("{}: OVERLOAD {:.2} s after it leaves the ground", sc.name(), t - off));
-                                }
-                            }
-                            _ => {}
-                        }
+                    for (frac, over) in [(0.9, false), (1.1, true)] {
+                        out.push((Scenario::lift_off(angle, frac * rated, rope, seals, take_up, 5), over));
                     }
                 }
             }
+        }
+    }
+    out
+}
+
+/// [`lift_offs_over`] on `ropes`.
+fn lift_offs_on(precision: Precision, angles: &[f64], take_ups: &[f64], ropes: &[Rope]) -> (Vec<String>, f64) {
+    let (mut failures, mut worst) = (Vec::new(), 0.0f64);
+    for (sc, must) in lift_off_scenarios(angles, take_ups, ropes) {
+        let pts = replay(&sc, precision);
+        let off = HOLD_BEFORE_S + sc.lift_off_s.unwrap_or(0.0);
+        match (must, first_overload(&pts)) {
+            (false, Some((t, _))) => failures.push(format!("{}: OVERLOAD at {t:.2} s", sc.name())),
+            (true, None) => failures.push(format!("{}: no OVERLOAD", sc.name())),
+            (true, Some((t, _))) => {
+                worst = worst.max(t - off);
+                if t > off + 1.0 {
+                    failures.push(format!("{}: OVERLOAD {:.2} s after it leaves the ground", sc.name(), t - off));
+                }
+            }
+            _ => {}
         }
     }
     println!("{precision:?}, lift-offs at {angles:?} taken up in {take_ups:?} s: {} failures, 110 % cut at most {worst:.2} s after leaving the ground", failures.len());
