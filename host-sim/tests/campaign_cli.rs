@@ -163,6 +163,26 @@ fn the_rope_that_was_the_weighing_restarts_at_it_in_a_fast_lowering() {
     assert_none_missed_early_or_false(&only("10", &["6948"]));
 }
 
+/// #3433 of the campaign with `--seed 11` (3.1 t lowered 34.6° → 10.1° in
+/// 12.6 s on a 3.0 m held rope, seal friction) and #2801 of `--seed 19`
+/// (3.1 t, 70.8° → 10.4° in 10.9 s on a 4.0 m rope, whose stop takes p1
+/// past its range for moments): the stop sets the load bouncing at about
+/// 1.6 Hz, whose crests passed W_fast's one stage at 1.058–1.065 × the load
+/// and were cut 1–2 s after the stop, at true u 0.908 and 0.896 (early;
+/// highest estimated u 1.011 and 1.003). For 2.5 s after a loaded move stops
+/// a second stage now keeps the bounce out
+/// (`moment_limiter::static_load::BOUNCE_WINDOW_S`): neither is cut, their
+/// highest estimated u 0.994 and 0.962.
+#[test]
+fn a_short_ropes_bounce_after_a_lowering_stops_at_10_degrees_is_not_early() {
+    for (seed, index) in [("11", "3433"), ("19", "2801")] {
+        let runs = only(seed, &[index]);
+        assert_none_missed_early_or_false(&runs);
+        assert_eq!(runs[0]["overload_onsets"], 0, "{}", runs[0]);
+        println!("#{index}: highest estimated u {}", runs[0]["max_estimated_utilization"]);
+    }
+}
+
 fn assert_none_missed_early_or_false(runs: &[serde_json::Value]) {
     for v in runs {
         assert_eq!(v["missed"], false, "#{} missed: {v}", v["index"]);
