@@ -1924,8 +1924,14 @@ struct AddedAtRestWorst {
 /// [`load_added_at_rest_after_a_move`]'s cases, measured over `after_s` at
 /// rest after the take-up (4 s there): the failures and the worst cuts.
 fn load_added_at_rest_after_a_move_measured(precision: Precision, cases: &[(f64, f64, Rope)], after_s: f64) -> (Vec<String>, AddedAtRestWorst) {
+    load_added_after_a_stop_measured(precision, cases, 3.0, after_s)
+}
+
+/// [`load_added_at_rest_after_a_move_measured`] with the take-up begun
+/// `at_rest_s` after the stop (3 s there).
+fn load_added_after_a_stop_measured(precision: Precision, cases: &[(f64, f64, Rope)], at_rest_s: f64, after_s: f64) -> (Vec<String>, AddedAtRestWorst) {
     const TAKE_UP_S: f64 = 0.5;
-    const AT_REST_S: f64 = 3.0;
+    let at_rest = at_rest_s;
     let mut failures = Vec::new();
     let mut worst_seen: f64 = 0.0;
     let mut worst = AddedAtRestWorst::default();
@@ -1936,9 +1942,9 @@ fn load_added_at_rest_after_a_move_measured(precision: Precision, cases: &[(f64,
                 for (frac, must) in [(0.9, false), (1.1, true)] {
                     let w1 = frac * rated_kg(to.to_radians());
                     let name = format!("{from:.0}->{to:.0} 10s {rope:?} {seals:?}: {w0:.0} kg, +{:.0} kg at rest", w1 - w0);
-                    let rows = lift_after_a_move(from, to, rope, seals, w0, AT_REST_S, TAKE_UP_S, w1, after_s);
+                    let rows = lift_after_a_move(from, to, rope, seals, w0, at_rest, TAKE_UP_S, w1, after_s);
                     let pts = replay_rows(&rows, seals, precision);
-                    let lifted = HOLD_BEFORE_S + 10.0 + AT_REST_S + TAKE_UP_S;
+                    let lifted = HOLD_BEFORE_S + 10.0 + at_rest + TAKE_UP_S;
                     // Seen: the estimate at 1/1.1 of the true load, where a
                     // 110 % load is an OVERLOAD (the lift-off test's bound).
                     let seen = pts.iter().find(|q| q.t >= lifted && q.ratio >= 1.0 / 1.1).map(|q| q.t - lifted);
@@ -2116,6 +2122,57 @@ const ADDED_GAP: [(f64, f64, Rope); 4] = [
     (40.0, 80.0, Rope::Held(0.25)),
     (40.0, 80.0, Rope::Held(1.0)),
 ];
+
+/// [`load_added_at_rest_after_a_move`]'s cases with the load taken up 1 s
+/// after the stop instead of 3 s: the failures of its bounds, the slowest
+/// first cut of 110 % (s after the take-up) and how many 90 % loads are cut.
+fn load_added_one_second_after_a_stop(precision: Precision) -> (Vec<String>, f64, usize) {
+    let (failures, worst) = load_added_after_a_stop_measured(precision, &ADDED_SEEN, 1.0, 4.0);
+    let ninety_cut = failures.iter().filter(|f| f.contains(": OVERLOAD at") && !f.contains(": OVERLOAD at +")).count();
+    println!(
+        "{precision:?}: {} failures; 110 % first cut {:.2} s after its take-up at the latest; 90 % cut in {ninety_cut} cases",
+        failures.len(),
+        worst.slowest_overload_s
+    );
+    (failures, worst.slowest_overload_s, ninety_cut)
+}
+
+/// KNOWN GAP, measured (f64): taken up 1 s after the stop, a load added at
+/// rest is seen late. 110 % is first cut 1.68–3.75 s after its take-up in 8
+/// of the 16 cases (40° → 60° on the ropes a quarter, half and all the way
+/// to the tip height, 60° → 40° on the 3 m rope with seal friction, 40° → 80°
+/// on the half-way rope), and 90 % is cut at true u 0.900 in 3 of 16 (60° →
+/// 40° on the quarter- and half-way ropes, 0.67–2.1 s after its take-up). The
+/// load swings hardest in the first seconds after the stop; no rope of the
+/// bank reads it consistently yet, so the common jump
+/// (`moment_limiter::load_jump`) has no voters, and the fast reading, the
+/// lowest rope's, climbs with the swing. 3 s after the stop every case keeps
+/// the bounds (`a_load_added_at_rest_after_a_move_*`). Found when measuring
+/// what the stop's second stage (`moment_limiter::static_load::BOUNCE_WINDOW_S`)
+/// costs a load added within its 2.5 s: the same failures without it, the
+/// slowest of the 40° → 60° 5.9 m rope's cuts 1.46 s after instead of 1.68 s.
+#[test]
+#[ignore = "KNOWN GAP: a load added 1 s after a stop is cut up to 3.75 s after its take-up (110 %), and 90 % is cut in 3 of 16 cases"]
+fn a_load_added_one_second_after_a_stop_known_gap() {
+    let (failures, _, _) = load_added_one_second_after_a_stop(Precision::F64);
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
+/// The known gap above pinned at its measured size: every 110 % load cut
+/// within 3.8 s of its take-up (3.75 s measured), 90 % cut in no more than 3
+/// cases, and no other failure than those two kinds and the reading of
+/// 90 % slower than 1 s that goes with a late cut.
+#[test]
+fn a_load_added_one_second_after_a_stop_stays_as_measured() {
+    let (failures, slowest, ninety_cut) = load_added_one_second_after_a_stop(Precision::F64);
+    let other: Vec<&String> = failures
+        .iter()
+        .filter(|f| !f.contains(": OVERLOAD at") && !f.contains("estimate below 1/1.1 of the true load 1 s after"))
+        .collect();
+    assert!(other.is_empty(), "{other:#?}");
+    assert!(slowest <= 3.8, "110 % first cut {slowest:.2} s after its take-up");
+    assert!(ninety_cut <= 3, "90 % cut in {ninety_cut} cases");
+}
 
 #[test]
 fn a_load_added_at_rest_after_a_move_f64() {

@@ -218,9 +218,14 @@
 //! read at most u 0.994 and 0.962. No lift-off is delayed: a load leaves
 //! the ground with the boom still and the hook empty before, and after an
 //! empty-hook move the window does not open. A load added to a hanging
-//! load within 2.5 s of the stop is read through the second stage: a step
-//! reaches 0.87 of itself about 0.34 s later (the two stages' step
-//! response, computed, not measured).
+//! load within 2.5 s of the stop is read through the second stage: taken up
+//! 1 s after the stop (`host-sim` test
+//! `a_load_added_one_second_after_a_stop_known_gap`), one 110 % case of 16
+//! is cut 1.68 s after its take-up instead of 1.46 s, the others as without
+//! it. That test found the load added so soon after a stop seen late
+//! whether or not the window is there (up to 3.75 s): no rope of the bank
+//! reads the fresh swing consistently yet, so the common jump has no voters
+//! ([`crate::load_jump`]).
 //!
 //! ## A still boom: the force without the sensor's lag
 //!
