@@ -214,8 +214,8 @@
 //! and loads of 0.896–0.908 of rated were cut 1–2 s after the stop, early
 //! (campaign seed 11 #3433, seed 19 #2801). So for [`BOUNCE_WINDOW_S`]
 //! after a loaded move stops, W_fast and the still force's stage (below,
-//! "A still boom") are read through a second stage like the first, which passes that bounce at 0.16: the two
-//! read at most u 0.994 and 0.962. No lift-off is delayed: a load leaves
+//! "A still boom") are read through a second stage like the first, which
+//! passes that bounce at 0.16: the two read at most u 0.994 and 0.962. No lift-off is delayed: a load leaves
 //! the ground with the boom still and the hook empty before, and after an
 //! empty-hook move the window does not open. A load added to a hanging
 //! load within 2.5 s of the stop is read through the second stage: taken up
@@ -739,8 +739,7 @@ pub struct StaticLoadBank<T> {
     /// reads; `None` without that force.
     still_stage: Option<T>,
     /// The second stages of W_fast and of the still force's load, read for
-    /// [`BOUNCE_WINDOW_S`] after a loaded move stops (they run always, so
-    /// they are settled when read).
+    /// [`BOUNCE_WINDOW_S`] after a loaded move stops.
     bounce_stages: (Option<T>, Option<T>),
     /// Time left in the stop's bounce window (s; see [`BOUNCE_WINDOW_S`]).
     bounce_s: T,
@@ -1359,16 +1358,15 @@ impl<T: Real> StaticLoadBank<T> {
         // [`FIRST_SAMPLES_S`], whose force is the mean of its samples so far
         // (see the module doc, "Power-up").
         let first = self.started_s < T::lit(FIRST_SAMPLES_S);
-        let fast = match self.fast_stage {
-            Some(y) if !first => y + gain * (fast - y),
-            _ => fast,
-        };
+        let fast = stage(fast, self.fast_stage, gain, first);
         self.fast_stage = Some(fast);
         // Right after a loaded move stops, a second stage against the
-        // stop's bounce (see the module doc).
+        // stop's bounce (see the module doc); it runs always, so it is
+        // settled when read.
         let bouncing = self.bounce_s > T::lit(0.0);
-        let (fast, bounce_fast) = second_stage(fast, self.bounce_stages.0, gain, first, bouncing);
+        let bounce_fast = stage(fast, self.bounce_stages.0, gain, first);
         self.bounce_stages.0 = Some(bounce_fast);
+        let fast = if bouncing { bounce_fast } else { fast };
         if still && self.after_move {
             self.rest_peak_kg = Some(self.rest_peak_kg.map_or(fast, |p| p.max(fast)));
         }
@@ -1436,14 +1434,11 @@ impl<T: Real> StaticLoadBank<T> {
         let still_now = terms
             .force_still_n
             .and_then(|f| terms.at_rest.scale_load_part(f_hi.unwrap_or(T::lit(1.0))).solve(f));
-        self.still_stage = match (self.still_stage, still_now) {
-            (Some(y), Some(w)) if !first => Some(y + gain * (w - y)),
-            (_, w) => w,
-        };
+        self.still_stage = still_now.map(|w| stage(w, self.still_stage, gain, first));
         let still_kg = self.still_stage.map(|w| {
-            let (read, stage) = second_stage(w, self.bounce_stages.1, gain, first, bouncing);
-            self.bounce_stages.1 = Some(stage);
-            read
+            let bounce_still = stage(w, self.bounce_stages.1, gain, first);
+            self.bounce_stages.1 = Some(bounce_still);
+            if bouncing { bounce_still } else { w }
         });
         let load_kg = match (agree, still_kg) {
             (true, Some(w)) => load_kg.max(w),
@@ -1511,17 +1506,15 @@ impl<T: Real> StaticLoadBank<T> {
     }
 }
 
-/// One cycle of a second smoothing stage of gain `gain` after the first
-/// stage's `input`, from its last output `last`: returns what is read (the
-/// second stage's output while `bouncing`, else `input`) and the stage's new
-/// output. The stage restarts at `input` when it has none, or over the
-/// first samples (see the module doc, "Power-up").
-fn second_stage<T: Real>(input: T, last: Option<T>, gain: T, first: bool, bouncing: bool) -> (T, T) {
-    let stage = match last {
+/// One cycle of a first-order smoothing stage of gain `gain` on `input`,
+/// from its last output `last`: the new output. The stage starts at `input`
+/// when it has none, and follows it unsmoothed over the first samples
+/// (`first`; see the module doc, "Power-up").
+fn stage<T: Real>(input: T, last: Option<T>, gain: T, first: bool) -> T {
+    match last {
         Some(y) if !first => y + gain * (input - y),
         _ => input,
-    };
-    (if bouncing { stage } else { input }, stage)
+    }
 }
 
 #[cfg(test)]
