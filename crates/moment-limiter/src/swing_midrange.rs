@@ -30,7 +30,7 @@
 //! ropes' readings until the mean over one swing period is found (P·4/3 and
 //! a second of confirmation after the take-up: 10.6 s on a 13 m rope). A
 //! 110 % load added 3 s after a raise to 80° on that rope was cut only 12 s
-//! after its take-up.
+//! after its take-up; from this module's midrange, 8.6 s after.
 //!
 //! So once the bank sees a load added at rest (W_fast passing the held
 //! weighing by [`crate::load_jump::JUMP`]) it follows W₁ through two
@@ -58,7 +58,8 @@
 //!
 //! The first reading comes half a swing period to a period and two thirds
 //! after the following begins (a crest within [`HALF_SWING_S`] of the start
-//! does not count, and the next is a period later). A crest or a trough
+//! that the force did not rise to by [`APPROACH`] of the span does not
+//! count, and the next is a period later). A crest or a trough
 //! taken while the load was still being taken up is lower than the new
 //! load's: the midrange then reads low (a floor that raises less), never
 //! high. A load set down while it is followed would read high (the old
@@ -86,9 +87,12 @@ pub const MIN_TURN: f64 = 0.05;
 
 /// A first turning point within [`HALF_SWING_S`] of the start of the
 /// following counts if the force came to it from the start by this share
-/// of the span to the next turning point: a swing's crest just after the
-/// take-up (an 8.9 m rope's came 0.65 s after the following began, from
-/// 0.6 of the span), not a bounce's wiggle on the swing's slow rise.
+/// of the span to the next turning point: a crest the take-up's rise led
+/// into, not a bounce's wiggle on the swing's slow rise. (On the 8.9 m rope
+/// of `host-sim` test `a_lowering_soon_after_a_load_added_at_rest_known_gap`
+/// the new load's first crest came 0.65 s after the following began, from
+/// less than half the span: not counted, and the lowering started before
+/// the next crest.)
 pub const APPROACH: f64 = 0.5;
 
 /// Shortest time from one turning point to the next for it to count (s):
