@@ -1565,7 +1565,7 @@ impl<T: Real> StaticLoadBank<T> {
 /// from its last output `last`: the new output. The stage starts at `input`
 /// when it has none, and follows it unsmoothed over the first samples
 /// (`first`; see the module doc, "Power-up").
-fn stage<T: Real>(input: T, last: Option<T>, gain: T, first: bool) -> T {
+pub(crate) fn stage<T: Real>(input: T, last: Option<T>, gain: T, first: bool) -> T {
     match last {
         Some(y) if !first => y + gain * (input - y),
         _ => input,

@@ -71,6 +71,8 @@
 
 use crane_model::Real;
 
+use crate::static_load::stage;
+
 /// Share of W₁'s range since the following began by which it must turn
 /// back from an extreme for the extreme to be a turning point.
 pub const TURN: f64 = 0.15;
@@ -164,16 +166,12 @@ impl<T: Real> SwingMidrange<T> {
             return self.reading;
         }
         let zero = T::lit(0.0);
-        let (a, y) = match self.stages {
-            Some((a, b)) => {
-                let a = a + gain * (w1 - a);
-                (a, b + gain * (a - b))
-            }
-            None => {
-                *self = Self { first: w1, highest: w1, lowest: w1, candidate: (w1, zero), last: (w1, zero, false), ..Self::new() };
-                (w1, w1)
-            }
-        };
+        if self.stages.is_none() {
+            *self = Self { first: w1, highest: w1, lowest: w1, candidate: (w1, zero), last: (w1, zero, false), ..Self::new() };
+        }
+        // The bank's first-order stage, twice (it starts at its input).
+        let a = stage(w1, self.stages.map(|s| s.0), gain, false);
+        let y = stage(a, self.stages.map(|s| s.1), gain, false);
         self.stages = Some((a, y));
         if dt_s.is_finite() && dt_s > zero {
             self.t_s += dt_s;
