@@ -1283,7 +1283,7 @@ fn inched_lowering(precision: Precision) -> (Vec<(String, f64)>, Vec<String>) {
 
 /// [`inched_lowering`]: never a true u of 1.05 or more without the cut
 /// (OVERLOAD or FAULT). Early cuts are [`inched_lowering_known_gap`]'s,
-/// pinned here at its measured size (3 of 64, from true u 0.882) so that it
+/// pinned here at its measured size (3 of 64, from true u 0.883) so that it
 /// cannot widen unseen.
 fn inched_lowering_is_cut(precision: Precision) {
     let (early, late) = inched_lowering(precision);
@@ -1305,8 +1305,10 @@ fn an_inched_lowering_is_cut_f32() {
 
 /// KNOWN GAP, measured (f64; f32 alike): an inched lowering
 /// ([`inched_lowering`]) is cut early, toward safety, in 3 of 64 cases: at
-/// true u 0.882–0.887 (the 3 m rope in 3° steps with 1 s pauses, the load
-/// rated at 45°, both friction laws) and 0.908 (the 8.9 m rope in 3° steps,
+/// true u 0.883–0.889 (the 3 m rope in 3° steps with 1 s pauses, the load
+/// rated at 45°, both friction laws; 0.882–0.887 until the rest went on
+/// through the angle noise's brief excursions of the rate,
+/// `moment_limiter::static_load::UNSETTLED_GRACE_S`) and 0.908 (the 8.9 m rope in 3° steps,
 /// constant friction, rated at 30°). Each pause starts a swing the next move
 /// meets out of phase. It was 10 of 64 (from 0.804: the 8.9 m rope in 6°
 /// steps with 4 s pauses, the 6.0 m rope in 5° steps) until the rope that
@@ -1314,7 +1316,7 @@ fn an_inched_lowering_is_cut_f32() {
 /// seven of them unseen here; before the averages carried the rest's
 /// weighing into the next move (`moment_limiter::static_load`), 7 of 64.
 #[test]
-#[ignore = "KNOWN GAP: an inched lowering past the rated radius is cut early (toward safety) in 3 of 64 cases, from true u 0.882"]
+#[ignore = "KNOWN GAP: an inched lowering past the rated radius is cut early (toward safety) in 3 of 64 cases, from true u 0.883"]
 fn inched_lowering_known_gap() {
     let (early, _) = inched_lowering(Precision::F64);
     assert!(early.is_empty(), "{early:#?}");
@@ -2254,6 +2256,30 @@ fn a_load_added_at_rest_where_no_rope_follows_is_cut_within_9_s_f64() {
 #[test]
 fn a_load_added_at_rest_where_no_rope_follows_is_cut_within_9_s_f32() {
     a_load_added_at_rest_where_no_rope_follows_is_cut_within_9_s(Precision::F32);
+}
+
+/// The same behind three times synth's angle noise (0.09°). The filtered
+/// rate of the still boom goes over `SETTLED_RAD_S` for 0.07–0.25 s about
+/// every second; until the rest's followers went on through such an
+/// excursion (`moment_limiter::static_load::UNSETTLED_GRACE_S`), each one
+/// started the mean over a period and the swing's midrange again and
+/// switched the force and the pendulums between their readings with and
+/// without the sensor's lag: the 13 m rope's 110 % at 80° was left uncut
+/// for 18.3 s (0.06° alike), and 90 % on the 3 m rope at 60° was an
+/// OVERLOAD at true u 0.900 10.3 s after its take-up (17.4 s at 0.06°).
+/// Measured now (f64 and f32): 8.59 s, as without the noise; no OVERLOAD.
+fn a_load_added_at_rest_where_no_rope_follows_behind_angle_noise(precision: Precision) {
+    with_setting(&NOISE_DEG, Some(0.09), || a_load_added_at_rest_where_no_rope_follows_is_cut_within_9_s(precision));
+}
+
+#[test]
+fn a_load_added_at_rest_where_no_rope_follows_behind_angle_noise_is_cut_within_9_s_f64() {
+    a_load_added_at_rest_where_no_rope_follows_behind_angle_noise(Precision::F64);
+}
+
+#[test]
+fn a_load_added_at_rest_where_no_rope_follows_behind_angle_noise_is_cut_within_9_s_f32() {
+    a_load_added_at_rest_where_no_rope_follows_behind_angle_noise(Precision::F32);
 }
 
 /// Moves after which a load added at rest on the paid-out rope (the
@@ -3878,3 +3904,4 @@ fn a_campaign_in_the_second_formulation() {
 fn a_full_campaign_in_the_second_formulation() {
     campaign_in_the_second_formulation(10_000);
 }
+
