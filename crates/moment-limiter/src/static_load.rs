@@ -1820,6 +1820,32 @@ mod rest_tests {
         out
     }
 
+    /// A still boom's rate over [`SETTLED_RAD_S`] for less than
+    /// [`UNSETTLED_GRACE_S`] (angle noise) leaves the rest settled for what
+    /// follows the force over seconds; for longer (a creep), not.
+    #[test]
+    fn the_rest_stays_settled_through_a_noise_excursion_but_not_through_a_creep() {
+        let mut bank = StaticLoadBank::new(SwingGeometry::<f64>::coles_930());
+        let (th, dt) = (1.0, 0.01);
+        // Between the settled (0.05 °/s) and the moving (0.15 °/s) rates.
+        let over = 0.1f64.to_radians();
+        for _ in 0..150 {
+            bank.advance(th, 0.0, 0.0, dt);
+        }
+        assert!(bank.calm());
+        for _ in 0..25 {
+            bank.advance(th, over, 0.0, dt);
+        }
+        assert!(bank.calm() && !bank.settled, "a 0.25 s excursion");
+        bank.advance(th, 0.0, 0.0, dt);
+        for _ in 0..51 {
+            bank.advance(th, -over, 0.0, dt);
+        }
+        assert!(!bank.calm() && bank.still, "a 0.51 s creep");
+        bank.advance(th, 0.0, 0.0, dt);
+        assert!(bank.calm());
+    }
+
     /// 3 t → 4 t added 3 s after each move of
     /// [`a_load_added_at_rest_after_a_move_is_seen_within_one_second`] on
     /// every possible held rope, in a world whose boom gives `scale` times
