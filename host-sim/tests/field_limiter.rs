@@ -3535,6 +3535,49 @@ fn a_load_added_at_rest_with_stuck_seals_or_angle_noise_is_cut_within_4_s() {
     assert!(worst.iter().all(|(_, w)| w.slowest_overload_s <= 4.0 && w.overload_at_90_u == 0.0), "{worst:#?}");
 }
 
+/// The loads added at rest 3 s after a stop, where a rope of the bank
+/// follows the swing ([`ADDED_SEEN`], over 6 s) and where none does
+/// ([`ADDED_GAP`], over 20 s), behind `noise_deg` of angle noise (f64).
+fn loads_added_at_rest_behind_angle_noise(noise_deg: f64) -> (AddedAtRestWorst, AddedAtRestWorst) {
+    let mut worst = None;
+    with_setting(&NOISE_DEG, Some(noise_deg), || {
+        let seen = load_added_at_rest_after_a_move_measured(Precision::F64, &ADDED_SEEN, 6.0).1;
+        let gap = load_added_at_rest_after_a_move_measured(Precision::F64, &ADDED_GAP, 20.0).1;
+        worst = Some((seen, gap));
+    });
+    let (seen, gap) = worst.expect("measured");
+    println!("{noise_deg} deg of angle noise: where a rope follows {seen:?}; where none does {gap:?}");
+    (seen, gap)
+}
+
+/// KNOWN GAP, measured (f64): an angle sensor five times noisier than
+/// synth's (0.15°). Up to 0.12° a load added at rest does what it does at
+/// 0.09° (where a rope follows, 110 % cut within 3.82 s of its take-up;
+/// where none does, within 8.59 s; 90 % never an OVERLOAD). At 0.15°, 90 %
+/// added on the 3 m rope stopped at 80° is an OVERLOAD at true u 0.900
+/// 3.0 s after its take-up (both friction laws), and where a rope follows
+/// 110 % is cut up to 3.80 s after its take-up, with 18 of the 32 cases
+/// missing a bound (4 at 0.12°). Not traced further: a pendulum this noisy
+/// is outside what the limiter is specified for (docs/limiter.md).
+#[test]
+#[ignore = "KNOWN GAP: behind 0.15 deg of angle noise, 90 % added at rest on the 3 m rope at 80 deg is an OVERLOAD"]
+fn loads_added_at_rest_behind_0_15_deg_of_angle_noise_known_gap() {
+    let (seen, gap) = loads_added_at_rest_behind_angle_noise(0.15);
+    assert!(seen.slowest_overload_s <= 1.0 && seen.overloads_at_90 + gap.overloads_at_90 == 0, "{seen:?} {gap:?}");
+}
+
+/// The known gap above pinned at its measured size: behind 0.15° of angle
+/// noise, 110 % added where a rope follows is cut within 3.85 s of its
+/// take-up (3.80 s measured), where none does it is left uncut for no more
+/// than 9 s (4.60 s), and 90 % is an OVERLOAD in no more than the 2 cases
+/// measured (none where a rope follows).
+#[test]
+fn loads_added_at_rest_behind_0_15_deg_of_angle_noise_stay_as_measured() {
+    let (seen, gap) = loads_added_at_rest_behind_angle_noise(0.15);
+    assert!(seen.slowest_overload_s <= 3.85 && seen.overloads_at_90 == 0, "{seen:?}");
+    assert!(gap.longest_uncut_s <= 9.0 && gap.overloads_at_90 <= 2, "{gap:?}");
+}
+
 /// Switched on at a steep boom behind noisy pressure sensors: 80 % of the
 /// load rated at 75° hangs at 85°, 82° or 78° (a 20 s raise or lowering of
 /// 7° after 2 s at rest; every rope, both friction laws, 8 noise draws) with
@@ -3904,4 +3947,5 @@ fn a_campaign_in_the_second_formulation() {
 fn a_full_campaign_in_the_second_formulation() {
     campaign_in_the_second_formulation(10_000);
 }
+
 
