@@ -1571,7 +1571,10 @@ impl<T: Real> StaticLoadBank<T> {
             Some(w) if self.moved => load_kg.max(w),
             _ => load_kg,
         };
-        let provisional = self.after_move && self.calm() && self.still_s <= T::lit(REST_HOLD_S) && !agree && !mean_weighs;
+        // Settled after a move, within the hold, the ropes disagreeing: the
+        // reading may follow the swing rather than the load.
+        let swinging_at_rest = self.after_move && self.calm() && self.still_s <= T::lit(REST_HOLD_S) && !agree;
+        let provisional = swinging_at_rest && !mean_weighs;
         let load_kg = match step_kg {
             Some(w) => {
                 // A load added, read from the swing: the averages take it
@@ -1586,7 +1589,7 @@ impl<T: Real> StaticLoadBank<T> {
         // it has turned at a crest and a trough, is a floor under the
         // reading and the averages the next move starts from (see
         // [`crate::swing_midrange`]).
-        let resting = still && self.calm() && self.after_move && !self.light_at_stop && !agree && self.still_s <= T::lit(REST_HOLD_S);
+        let resting = swinging_at_rest && !self.light_at_stop;
         let added = matches!(self.hold_kg, Some(h) if fast >= h * T::lit(1.0 + load_jump::JUMP));
         let mid_kg = if resting && (added || self.midrange.following()) {
             self.midrange.push(force - terms.at_rest.at_zero, self.dt_s, gain).and_then(|f| terms.at_rest.solve(f + terms.at_rest.at_zero))
