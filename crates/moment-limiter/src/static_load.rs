@@ -106,7 +106,8 @@
 //!   of rated made 100 % 3 s after a raise to 80° on an 8.9 m rope and
 //!   lowered at once past the rated radius was cut at true u 1.245–1.249
 //!   while the restart held the old load, instead of 1.128–1.133 (`host-sim`
-//!   test `a_lowering_soon_after_a_load_added_at_rest_is_cut_by_1_14_*`).
+//!   test `a_lowering_5_s_after_a_load_added_at_rest_soon_after_a_stop_*`;
+//!   since the swing's midrange weighs it, below, within the bounds).
 //!   At rest a hypothesis that cannot weigh keeps its average and votes with
 //!   it (the load swings on; its weighing from the move is the best it has).
 //!
@@ -452,11 +453,13 @@
 //! 14.3 s (`…_soon_after_a_raise_is_cut_within_10_5_s_*`), 90 % never an
 //! OVERLOAD. W_fast passes the held weighing late, though (it is the lowest
 //! rope's reading, through a stage): on an 8.9 m rope at 80° the following
-//! began 0.65 s before the new load's first crest, too soon to tell that
-//! crest from a bounce's, and the lowering that followed 6 s after the
-//! take-up started before a crest and a trough had counted
-//! (`a_lowering_soon_after_a_load_added_at_rest_known_gap`, cut at 1.13 as
-//! before).
+//! began 1.15 s before the new load's first crest, and the midrange of it
+//! and the next trough is read about 5.8 s after the take-up began, 0.2 s
+//! before a lowering begun 5 s after the 1 s take-up: cut within the bounds
+//! (`a_lowering_5_s_after_a_load_added_at_rest_soon_after_a_stop_*`; 1.13
+//! before [`crate::swing_midrange::HALF_SWING_S`] was 1.0 s), one begun
+//! 2–4 s after is not (cut up to true u 1.164,
+//! `a_lowering_2_to_10_s_after_a_load_added_at_rest_known_gap`).
 //!
 //! ## Settled, but for the angle's noise
 //!
@@ -567,10 +570,11 @@
 //! after the stop, the 8.9 m rope was cut at true u 1.079–1.085, the
 //! lowering starting from the old load's averages; now within the bounds
 //! (`a_lowering_after_a_load_added_at_rest_*`). Added 3 s after the stop,
-//! before the period is known, where no rope follows the swing, nothing
-//! weighs it before the move (the swing's midrange, below, not yet), and
-//! that rope is cut at 1.13
-//! (`a_lowering_soon_after_a_load_added_at_rest_known_gap`).
+//! before the period is known, where no rope follows the swing, the swing's
+//! midrange weighs it 5 s after its take-up (above), not sooner: lowered
+//! 2–4 s after the take-up, that rope is cut up to true u 1.164; and
+//! lowered 6–10 s after, several ropes are cut early, from 0.813
+//! (`a_lowering_2_to_10_s_after_a_load_added_at_rest_known_gap`).
 //!
 //! ## A load set down: the ropes hang still again
 //!
