@@ -1260,13 +1260,17 @@ fn lowerings_2_to_10_s_after_a_load_added_at_rest() -> (Vec<String>, f64, f64) {
 /// late, where nothing has weighed the new load when the lowering starts:
 /// 2 s after, up to true u 1.127; 3 s, 1.116; 4 s, 1.164 (the 3 m and
 /// 8.9 m ropes, rated at 45°); 7 s, 1.063 (the thesis's rope, seal
-/// friction). Cut early, where the lowering starts from a reading of the
-/// swing's crests: 6 s after, at 0.887 (the 3 m rope); 7 s, 0.891; 8 s,
-/// 0.813 (the 8.9 m rope, rated at 45°: 19 % early); 10 s, 0.865. 4.5–5.5 s
-/// after, within the bounds (a turning point 1.2 s after the one before, as
-/// until this test: 4.5–6 s cut up to 1.13; otherwise the same to ±0.004).
+/// friction). Cut early: 6 s after, at 0.887 (the 3 m rope); 7 s, 0.891
+/// (the 8.9 m rope); 8 s, 0.904; 10 s within the bounds (0.923). 4.5–5.5 s
+/// after, within the bounds. When this test was written, 8 s after was cut
+/// at 0.813 (19 % early) and 10 s at 0.865: the period mean's step read the
+/// load as 1.25 × itself from ratios that climbed bin by bin, a swing out
+/// of phase with the period found, until the ratios had to agree
+/// (`moment_limiter::period_mean::STEP_AGREE`). With a turning point of the
+/// swing's midrange 1.2 s after the one before, as until this test, 4.5–6 s
+/// was cut up to 1.13.
 #[test]
-#[ignore = "KNOWN GAP: a lowering past the rated radius 2-10 s after a load added at rest 3 s after a raise to 80 deg is cut late (true u up to 1.164) or early (from 0.813)"]
+#[ignore = "KNOWN GAP: a lowering past the rated radius 2-10 s after a load added at rest 3 s after a raise to 80 deg is cut late (true u up to 1.164) or early (from 0.887)"]
 fn a_lowering_2_to_10_s_after_a_load_added_at_rest_known_gap() {
     let (failures, _, _) = lowerings_2_to_10_s_after_a_load_added_at_rest();
     assert!(failures.is_empty(), "{failures:#?}");
@@ -1274,11 +1278,11 @@ fn a_lowering_2_to_10_s_after_a_load_added_at_rest_known_gap() {
 
 /// The known gap above pinned at its measured size, so that it cannot widen
 /// unseen: no sample of those lowerings at a true u over 1.17 goes uncut
-/// (1.164 measured), and none is cut before true u 0.81 (0.813).
+/// (1.164 measured), and none is cut before true u 0.88 (0.887).
 #[test]
 fn a_lowering_2_to_10_s_after_a_load_added_at_rest_stays_as_measured() {
     let (_, highest_uncut, lowest_onset) = lowerings_2_to_10_s_after_a_load_added_at_rest();
-    assert!(highest_uncut <= 1.17 && lowest_onset >= 0.81, "highest true u not cut {highest_uncut:.3}, lowest OVERLOAD onset {lowest_onset:.3}");
+    assert!(highest_uncut <= 1.17 && lowest_onset >= 0.88, "highest true u not cut {highest_uncut:.3}, lowest OVERLOAD onset {lowest_onset:.3}");
 }
 
 /// A lowering past the rated radius inched, as an operator does near the

@@ -573,7 +573,7 @@
 //! before the period is known, where no rope follows the swing, the swing's
 //! midrange weighs it 5 s after its take-up (above), not sooner: lowered
 //! 2–4 s after the take-up, that rope is cut up to true u 1.164; and
-//! lowered 6–10 s after, several ropes are cut early, from 0.813
+//! lowered 6–8 s after, several ropes are cut early, from 0.887
 //! (`a_lowering_2_to_10_s_after_a_load_added_at_rest_known_gap`).
 //!
 //! ## A load set down: the ropes hang still again
