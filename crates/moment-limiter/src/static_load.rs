@@ -822,6 +822,10 @@ pub struct StaticLoadBank<T> {
     /// How long the boom's rate has stayed over [`SETTLED_RAD_S`] without
     /// a break (s); see [`UNSETTLED_GRACE_S`].
     unsettled_s: T,
+    /// At the last advance the boom was still and its rate over
+    /// [`SETTLED_RAD_S`] for no longer than [`UNSETTLED_GRACE_S`]: the rest's
+    /// followers of the swing go on.
+    calm: bool,
     /// How long the boom has been moving without a pause (s).
     moving_s: T,
     /// How long the boom has been still (s), counted again from each
@@ -932,6 +936,7 @@ impl<T: Real> StaticLoadBank<T> {
             still: true,
             settled: true,
             unsettled_s: T::lit(0.0),
+            calm: true,
             moving_s: T::lit(0.0),
             still_s: T::lit(0.0),
             last_kg: None,
@@ -964,12 +969,6 @@ impl<T: Real> StaticLoadBank<T> {
         let lead_s = if lead_s.is_finite() && lead_s > T::lit(0.0) { lead_s } else { T::lit(0.0) };
         self.lead_s = lead_s;
         self
-    }
-
-    /// Still, and the rate over [`SETTLED_RAD_S`] for no longer than
-    /// [`UNSETTLED_GRACE_S`]: the rest's followers of the swing go on.
-    fn calm(&self) -> bool {
-        self.still && self.unsettled_s <= T::lit(UNSETTLED_GRACE_S)
     }
 
     /// Forgets the averages, keeps the swing (after a fault interrupted the
@@ -1101,15 +1100,20 @@ impl<T: Real> StaticLoadBank<T> {
         }
         let trig = angle_rad.sin_cos_own();
         let tip = BoomTip::new(trig, self.geometry.boom_length_m, drive_rate, drive_accel, dt_s);
-        // At rest the loaded pendulums swing longer by the boom's give (see
-        // the module doc).
+        self.dt_s = if dt_s.is_finite() && dt_s > T::lit(0.0) {
+            dt_s
+        } else {
+            T::lit(0.0)
+        };
+        let still = starting || rate_rad_s.abs() <= T::lit(MOVING_RAD_S);
         let settled = rate_rad_s.abs() <= T::lit(SETTLED_RAD_S);
-        let step_s = if dt_s.is_finite() && dt_s > T::lit(0.0) { dt_s } else { T::lit(0.0) };
-        self.unsettled_s = if settled { T::lit(0.0) } else { self.unsettled_s + step_s };
+        self.unsettled_s = if settled { T::lit(0.0) } else { self.unsettled_s + self.dt_s };
         // Settled but for the angle noise's brief excursions (see
         // UNSETTLED_GRACE_S): the give and a lift-off's shift of the tip
         // come and go with the boom, not with the noise.
-        let calm = rate_rad_s.abs() <= T::lit(MOVING_RAD_S) && self.unsettled_s <= T::lit(UNSETTLED_GRACE_S);
+        let calm = still && self.unsettled_s <= T::lit(UNSETTLED_GRACE_S);
+        // At rest the loaded pendulums swing longer by the boom's give (see
+        // the module doc).
         let give = match (calm, self.last_kg) {
             (true, Some(w)) => self.geometry.give_m(trig.0, w),
             _ => T::lit(0.0),
@@ -1123,17 +1127,12 @@ impl<T: Real> StaticLoadBank<T> {
         }
         self.ropes.update(&tip);
         self.paid_out.update(&tip, paid_out_m);
-        self.dt_s = if dt_s.is_finite() && dt_s > T::lit(0.0) {
-            dt_s
-        } else {
-            T::lit(0.0)
-        };
         self.advanced_s += self.dt_s;
         if starting {
             self.started_s += self.dt_s;
         }
-        let still = starting || rate_rad_s.abs() <= T::lit(MOVING_RAD_S);
         self.settled = settled;
+        self.calm = calm;
         if still {
             // A move ends: its last weighing is held (see `update`).
             if !self.still && self.moving_s >= T::lit(MOVE_FOR_HOLD_S) {
@@ -1333,7 +1332,7 @@ impl<T: Real> StaticLoadBank<T> {
         // but for the noise (see UNSETTLED_GRACE_S), the boom is still and
         // drives no pendulum.
         let led = match terms.force_still_n {
-            Some(f) if self.moved && self.calm() && self.lead_s > T::lit(0.0) => Some((f, self.led_factors(terms.angle_rad))),
+            Some(f) if self.moved && self.calm && self.lead_s > T::lit(0.0) => Some((f, self.led_factors(terms.angle_rad))),
             _ => None,
         };
         let (force, led) = match led {
@@ -1542,7 +1541,7 @@ impl<T: Real> StaticLoadBank<T> {
         // bank's ropes read the swing of the wrong period high and low);
         // otherwise a floor: it raises the reading, never lowers it.
         let advanced = core::mem::replace(&mut self.advanced_s, T::lit(0.0));
-        let period_kg = if self.calm() {
+        let period_kg = if self.calm {
             // Over a bridged gap the whole time advanced is one step, which
             // the mean refuses (it starts again).
             self.period_mean.push(force, terms.at_rest.at_zero, advanced).and_then(|f| terms.at_rest.solve(f))
@@ -1577,7 +1576,7 @@ impl<T: Real> StaticLoadBank<T> {
         };
         // Settled after a move, within the hold, the ropes disagreeing: the
         // reading may follow the swing rather than the load.
-        let swinging_at_rest = self.after_move && self.calm() && self.still_s <= T::lit(REST_HOLD_S) && !agree;
+        let swinging_at_rest = self.after_move && self.calm && self.still_s <= T::lit(REST_HOLD_S) && !agree;
         let provisional = swinging_at_rest && !mean_weighs;
         let load_kg = match step_kg {
             Some(w) => {
@@ -1839,18 +1838,18 @@ mod rest_tests {
         for _ in 0..150 {
             bank.advance(th, 0.0, 0.0, dt);
         }
-        assert!(bank.calm());
+        assert!(bank.calm);
         for _ in 0..25 {
             bank.advance(th, over, 0.0, dt);
         }
-        assert!(bank.calm() && !bank.settled, "a 0.25 s excursion");
+        assert!(bank.calm && !bank.settled, "a 0.25 s excursion");
         bank.advance(th, 0.0, 0.0, dt);
         for _ in 0..51 {
             bank.advance(th, -over, 0.0, dt);
         }
-        assert!(!bank.calm() && bank.still, "a 0.51 s creep");
+        assert!(!bank.calm && bank.still, "a 0.51 s creep");
         bank.advance(th, 0.0, 0.0, dt);
-        assert!(bank.calm());
+        assert!(bank.calm);
     }
 
     /// 3 t → 4 t added 3 s after each move of
