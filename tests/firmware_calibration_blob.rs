@@ -177,24 +177,25 @@ fn refused_calibration_files_and_blobs_exit_1_naming_the_reason() {
     };
     let mut flipped = good.clone();
     flipped[20] ^= 0x04;
-    let mut schema4 = good.clone();
-    schema4[6] = 4;
-    let mut format4 = good.clone();
-    format4[4..6].copy_from_slice(&(BLOB_FORMAT + 1).to_le_bytes());
+    let mut schema5 = good.clone();
+    schema5[6] = 5;
+    let mut format5 = good.clone();
+    format5[4..6].copy_from_slice(&(BLOB_FORMAT + 1).to_le_bytes());
     let mut p1_50 = good.clone();
     p1_50[8 + 3 * 8..8 + 4 * 8].copy_from_slice(&50.0f64.to_le_bytes());
     let mut nan = good.clone();
     nan[8..16].copy_from_slice(&f64::NAN.to_le_bytes());
     let mut long = good.clone();
     long.push(0);
+    let (short, longer) = (format!("wrong length ({} bytes", BLOB_LEN - 1), format!("wrong length ({} bytes", BLOB_LEN + 1));
     let cases: Vec<(&str, Vec<u8>, &str)> = vec![
         ("bit flip", flipped, "CRC mismatch"),
         (
             "truncated",
             good[..BLOB_LEN - 1].to_vec(),
-            "wrong length (83 bytes",
+            &short,
         ),
-        ("one byte long", long, "wrong length (85 bytes"),
+        ("one byte long", long, &longer),
         ("empty", Vec::new(), "wrong length (0 bytes"),
         (
             "erased flash",
@@ -207,14 +208,14 @@ fn refused_calibration_files_and_blobs_exit_1_naming_the_reason() {
             "wrong length",
         ),
         (
-            "schema version 4",
-            with_crc(schema4),
-            "unknown calibration schema version 4",
+            "schema version 5",
+            with_crc(schema5),
+            "unknown calibration schema version 5",
         ),
         (
-            "format 4",
-            with_crc(format4),
-            "unknown calibration blob format 4",
+            "format 5",
+            with_crc(format5),
+            "unknown calibration blob format 5",
         ),
         (
             "p1_offset_bar = 50",

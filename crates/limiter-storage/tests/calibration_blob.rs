@@ -8,14 +8,15 @@ mod common;
 use common::{layout, CutFlash};
 use limiter_storage::calibration_blob::{
     decode_calibration, encode_calibration, load_calibration, CalibrationBlobError, BLOB_FORMAT,
-    BLOB_FORMAT_1, BLOB_FORMAT_2, BLOB_LEN, BLOB_LEN_1, BLOB_LEN_2, BLOB_MAGIC,
+    BLOB_FORMAT_1, BLOB_FORMAT_2, BLOB_FORMAT_3, BLOB_LEN, BLOB_LEN_1, BLOB_LEN_2, BLOB_LEN_3,
+    BLOB_MAGIC,
 };
 use limiter_storage::crc::crc32;
 use limiter_storage::store::{Key, Store};
 use moment_limiter::tools::config_file::{
     calibration_from_values, calibration_values, hostile, parse_calibration,
     CalibrationFileError, CALIBRATION_KEYS, CALIBRATION_VERSION, CALIBRATION_VERSION_1,
-    CALIBRATION_VERSION_2, KEY_COUNT, V1_KEYS, V2_KEYS,
+    CALIBRATION_VERSION_2, CALIBRATION_VERSION_3, KEY_COUNT, V1_KEYS, V2_KEYS, V3_KEYS,
 };
 use moment_limiter::cycle::DEFAULT_ANGLE_SENSOR_LAG_S;
 use moment_limiter::load_estimate::Calibration;
@@ -52,7 +53,7 @@ fn json_to_blob_to_the_same_calibration_in_f64_and_f32() {
         let cal = parse_calibration::<f64>(text.as_bytes()).unwrap();
         let blob = encode_calibration(&cal).unwrap();
         assert_eq!(blob.len(), BLOB_LEN);
-        assert_eq!(BLOB_LEN, 84);
+        assert_eq!(BLOB_LEN, 100);
         // A file without a lag (the example is of schema 1) is stored with
         // the standard configuration's lag, what the limiter used for it.
         let with_lag = |c: Calibration<f64>| Calibration {
@@ -76,6 +77,36 @@ fn json_to_blob_to_the_same_calibration_in_f64_and_f32() {
 }
 
 #[test]
+fn a_format_3_blob_still_decodes_with_no_friction_per_rate() {
+    // What a board calibrated before the friction per unit rate holds: 84 bytes, schema 3.
+    let v3 = parse_calibration::<f64>(hostile::GOOD_V3.as_bytes()).unwrap();
+    assert_eq!((v3.friction_up_per_rate, v3.friction_down_per_rate), (0.0, 0.0));
+    assert!(v3.angle_sensor_lag_s.is_some());
+    let blob = raw_blob(&values(&v3)[..V3_KEYS], BLOB_FORMAT_3, CALIBRATION_VERSION_3 as u16);
+    assert_eq!((blob.len(), BLOB_LEN_3), (84, 84));
+    assert_eq!(decode_calibration::<f64>(&blob).unwrap(), v3);
+    assert_eq!(
+        decode_calibration::<f32>(&blob).unwrap(),
+        parse_calibration::<f32>(hostile::GOOD_V3.as_bytes()).unwrap()
+    );
+    // The length and the versions must agree.
+    assert_eq!(
+        decode_calibration::<f32>(&raw_blob(&values(&v3)[..V3_KEYS], BLOB_FORMAT, 3)),
+        Err(CalibrationBlobError::Format(BLOB_FORMAT))
+    );
+    assert_eq!(
+        decode_calibration::<f32>(&raw_blob(&values(&v3)[..V3_KEYS], BLOB_FORMAT_3, 4)),
+        Err(CalibrationBlobError::SchemaVersion(4))
+    );
+    // Stored by the previous firmware under store version 3: the board loads it.
+    let mut store = Store::new(CutFlash::<4>::new(), layout());
+    store.write_blob(Key::Calibration, BLOB_FORMAT_3, &blob).unwrap();
+    let (back, crc) = load_calibration::<f64, _>(&mut store).unwrap();
+    assert_eq!(back, v3);
+    assert_eq!(crc, crc32(&blob));
+}
+
+#[test]
 fn a_format_2_blob_still_decodes_without_a_lag() {
     // What a board calibrated before the lag was learned holds: 76 bytes, schema 2.
     let v2 = parse_calibration::<f64>(hostile::GOOD_V2.as_bytes()).unwrap();
@@ -88,7 +119,7 @@ fn a_format_2_blob_still_decodes_without_a_lag() {
         decode_calibration::<f32>(&blob).unwrap(),
         parse_calibration::<f32>(hostile::GOOD_V2.as_bytes()).unwrap()
     );
-    // Its bounds are enforced as in format 3.
+    // Its bounds are enforced as in format 4.
     let mut bad = values(&v2);
     bad[6] = 0.5;
     let e = decode_calibration::<f32>(&raw_blob(&bad[..V2_KEYS], BLOB_FORMAT_2, 2)).unwrap_err();
@@ -260,7 +291,7 @@ fn corrupt_truncated_and_foreign_blobs_are_refused() {
         }
     }
     // Wrong lengths.
-    for n in [0, 4, BLOB_LEN_1 - 1, BLOB_LEN_1 + 1, BLOB_LEN_2 - 1, BLOB_LEN_2 + 1, BLOB_LEN - 1] {
+    for n in [0, 4, BLOB_LEN_1 - 1, BLOB_LEN_1 + 1, BLOB_LEN_2 - 1, BLOB_LEN_2 + 1, BLOB_LEN_3 - 1, BLOB_LEN_3 + 1, BLOB_LEN - 1] {
         assert_eq!(
             decode_calibration::<f32>(&blob[..n]),
             Err(CalibrationBlobError::Length(n))

@@ -70,6 +70,18 @@
 //! (A lag error Δτ leaves ∂F/∂θ·θ̇·Δτ in the residual: with the default
 //! 0.111 s on a 0.3 s sensor, 2 kN that the friction fit took as friction.)
 //!
+//! **The part that grows with the rate.** A friction that grows with the
+//! piston's speed (a viscous seal) adds c·|ω| per direction, ω the boom's
+//! rate (the piston's speed over the cylinder's lever da/dθ, 2.0–2.5 m/rad
+//! over 20°–85°). The moments carry |ω| beside F, and where the runs show
+//! the rate apart from the force (its spread over the steady samples at
+//! least [`MIN_RATE_SPREAD`] of its mean: runs at two speeds), the plane
+//! z = a + b·F + c·|ω| is fitted by least squares and c kept when positive
+//! with a standard error under [`MAX_RATE_SE_N_S`]. At one speed the rate
+//! hardly varies over the steady samples (1 % in a 10 s run): c = 0 and a
+//! holds the friction at that speed, what the calibration learned before c
+//! (`fit_with_rate`; `DirectionFit::rate_observable`).
+//!
 //! Several runs combine by merging their moments ([`CalibrationLearner::merge`],
 //! Chan's formula): `crane-sim calibrate` learns each log on its own learner,
 //! checks each known-load run against the unloaded runs' law, then fits the
@@ -79,7 +91,7 @@ use crane_model::loads::load_model::HookLoadModel;
 use crane_model::{ModelError, Real};
 
 use crate::io::Measurement;
-use crate::load_estimate::{model_force_terms, Calibration, Direction, Friction, MAX_PER_FORCE};
+use crate::load_estimate::{model_force_terms, Calibration, Direction, Friction, MAX_PER_FORCE, MAX_PER_RATE_N_S};
 
 /// Least spread of the piston force over a direction's steady samples
 /// (standard deviation over mean) for the slope b to be observable.
@@ -88,6 +100,16 @@ pub const MIN_FORCE_SPREAD: f64 = 0.05;
 /// Largest standard error of the fitted slope b for it to be taken (–): at
 /// 0.003 the slope's error is ±0.3 % of the force, ±1.5 kN on a 500 kN lift.
 pub const MAX_SLOPE_SE: f64 = 0.003;
+
+/// Least spread of the boom rate over a direction's steady samples
+/// (standard deviation over mean) for the friction per unit rate c to be
+/// observable: runs at two speeds (a 10 s and a 30 s luff spread it by
+/// about 0.5).
+pub const MIN_RATE_SPREAD: f64 = 0.15;
+
+/// Largest standard error of the fitted c for it to be taken (N·s/rad):
+/// ±350 N of friction at 0.07 rad/s (a 10 s luff over 40°).
+pub const MAX_RATE_SE_N_S: f64 = 5_000.0;
 
 /// Why no calibration could be learned.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -188,11 +210,11 @@ pub const REST_SPLIT_SPREAD: f64 = 0.2;
 pub const LOOKAHEAD_CAPACITY: usize = 512;
 
 /// A residual waiting for its look-ahead: (time moving when seen, force F,
-/// residual, up?).
-type Pending<T> = (T, T, T, bool);
+/// boom rate |ω|, residual, up?).
+type Pending<T> = (T, T, T, T, bool);
 
-/// Running means and co-moments of (x, y) = (piston force F, residual r)
-/// (Welford's update; see the module doc).
+/// Running means and co-moments of (x, v, y) = (piston force F, boom rate
+/// |ω|, residual r) (Welford's update; see the module doc).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Moments<T> {
     /// Number of samples.
@@ -207,6 +229,14 @@ pub struct Moments<T> {
     pub cxy: T,
     /// Σ(y − ȳ)² (N²).
     pub cyy: T,
+    /// Mean of v (rad/s).
+    pub mean_v: T,
+    /// Σ(v − v̄)² (rad²/s²).
+    pub cvv: T,
+    /// Σ(x − x̄)(v − v̄) (N·rad/s).
+    pub cxv: T,
+    /// Σ(v − v̄)(y − ȳ) (N·rad/s).
+    pub cvy: T,
 }
 
 impl<T: Real> Moments<T> {
@@ -220,20 +250,34 @@ impl<T: Real> Moments<T> {
             cxx: z,
             cxy: z,
             cyy: z,
+            mean_v: z,
+            cvv: z,
+            cxv: z,
+            cvy: z,
         }
     }
 
-    /// Adds one sample.
+    /// Adds one sample (x, y), at no rate.
     pub fn add(&mut self, x: T, y: T) {
+        self.add_at_rate(x, T::lit(0.0), y);
+    }
+
+    /// Adds one sample (x, v, y).
+    pub fn add_at_rate(&mut self, x: T, v: T, y: T) {
         self.n = self.n.saturating_add(1);
         let n = T::lit(f64::from(self.n));
         let dx = x - self.mean_x;
         self.mean_x += dx / n;
+        let dv = v - self.mean_v;
+        self.mean_v += dv / n;
         let dy = y - self.mean_y;
         self.mean_y += dy / n;
         self.cxx += dx * (x - self.mean_x);
         self.cxy += dx * (y - self.mean_y);
         self.cyy += dy * (y - self.mean_y);
+        self.cvv += dv * (v - self.mean_v);
+        self.cxv += dx * (v - self.mean_v);
+        self.cvy += dv * (y - self.mean_y);
     }
 
     /// Adds the samples of `other` (Chan's formula).
@@ -248,13 +292,18 @@ impl<T: Real> Moments<T> {
         let (na, nb) = (T::lit(f64::from(self.n)), T::lit(f64::from(other.n)));
         let n = na + nb;
         let dx = other.mean_x - self.mean_x;
+        let dv = other.mean_v - self.mean_v;
         let dy = other.mean_y - self.mean_y;
         let w = na * nb / n;
         self.mean_x += dx * nb / n;
+        self.mean_v += dv * nb / n;
         self.mean_y += dy * nb / n;
         self.cxx += other.cxx + dx * dx * w;
         self.cxy += other.cxy + dx * dy * w;
         self.cyy += other.cyy + dy * dy * w;
+        self.cvv += other.cvv + dv * dv * w;
+        self.cxv += other.cxv + dx * dv * w;
+        self.cvy += other.cvy + dv * dy * w;
         self.n = self.n.saturating_add(other.n);
     }
 }
@@ -290,6 +339,17 @@ pub struct DirectionFit<T> {
     pub force_mean_n: T,
     /// Standard deviation of the piston force over the samples (N).
     pub force_sd_n: T,
+    /// Friction per unit boom rate c (N·s/rad, 0 … [`MAX_PER_RATE_N_S`]).
+    pub c: T,
+    /// `false`: the rate did not vary enough apart from the force for c
+    /// (it is 0).
+    pub rate_observable: bool,
+    /// Standard error of c as fitted (N·s/rad).
+    pub c_se: T,
+    /// Mean and standard deviation of the boom rate over the samples (rad/s).
+    pub rate_mean: T,
+    /// Standard deviation of the boom rate over the samples (rad/s).
+    pub rate_sd: T,
 }
 
 /// Fits z = s·(r − offset) = a + b·F over moments of (F, r).
@@ -340,6 +400,74 @@ fn fit_direction<T: Real>(m: &Moments<T>, s: T, offset: T) -> DirectionFit<T> {
         n: m.n,
         force_mean_n: m.mean_x,
         force_sd_n: sd,
+        c: zero,
+        rate_observable: false,
+        c_se: T::lit(f64::INFINITY),
+        rate_mean: m.mean_v,
+        rate_sd: (m.cvv / n).max(zero).sqrt(),
+    }
+}
+
+/// The fit `base` (a + b·F, [`fit_direction`]) with a friction per unit
+/// boom rate c where the rate is observable apart from the force: z =
+/// s·(r − offset) = a + b·F + c·|ω| by least squares over the moments
+/// (see the module doc). Returns `base` where c is not observable, not
+/// positive, or its fit is not finite.
+fn fit_with_rate<T: Real>(m: &Moments<T>, s: T, offset: T, base: DirectionFit<T>) -> DirectionFit<T> {
+    let zero = T::lit(0.0);
+    let n = T::lit(f64::from(m.n.max(1)));
+    let dof = T::lit(f64::from(m.n.saturating_sub(3).max(1)));
+    let (sxx, sxv, svv) = (m.cxx, m.cxv, m.cvv);
+    let (sxz, svz, szz) = (s * m.cxy, s * m.cvy, m.cyy);
+    let sd_v = (svv / n).max(zero).sqrt();
+    let spread = m.mean_v > zero && sd_v >= T::lit(MIN_RATE_SPREAD) * m.mean_v;
+    // Over 0, and not NaN.
+    let positive = |x: T| x > zero;
+    if !spread || !positive(svv) {
+        return base;
+    }
+    // Jointly with the slope where the slope is observable, else alone.
+    let (b, b_se, c, c_se) = if base.slope_observable {
+        let det = sxx * svv - sxv * sxv;
+        if !positive(det) {
+            return base;
+        }
+        let b = (sxz * svv - svz * sxv) / det;
+        let c = (svz * sxx - sxz * sxv) / det;
+        let var = (szz - b * sxz - c * svz).max(zero) / dof;
+        (b, (var * svv / det).sqrt(), c, (var * sxx / det).sqrt())
+    } else {
+        let c = svz / svv;
+        let ssr = (szz - c * svz).max(zero);
+        (base.raw_b, base.b_se, c, (ssr / dof / svv).sqrt())
+    };
+    if !(c > zero && c_se <= T::lit(MAX_RATE_SE_N_S) && b.is_finite()) {
+        return base;
+    }
+    let raw_b = b;
+    let b = if base.slope_observable { b } else { zero };
+    let b_clamped = b.max(zero).min(T::lit(MAX_PER_FORCE));
+    // The rate's part refitted for the slope as clamped.
+    let c = if b_clamped == b { c } else { (svz - b_clamped * sxv) / svv };
+    let c = c.max(zero).min(T::lit(MAX_PER_RATE_N_S));
+    let b = b_clamped;
+    let mean_z = s * (m.mean_y - offset);
+    let a = (mean_z - b * m.mean_x - c * m.mean_v).max(zero);
+    let bias = mean_z - a - b * m.mean_x - c * m.mean_v;
+    let ssr = (szz - T::lit(2.0) * (b * sxz + c * svz) + b * b * sxx + T::lit(2.0) * b * c * sxv + c * c * svv + n * bias * bias).max(zero);
+    if !(a.is_finite() && c.is_finite()) {
+        return base;
+    }
+    DirectionFit {
+        a_n: a,
+        b,
+        raw_b,
+        b_se,
+        c,
+        rate_observable: true,
+        c_se,
+        rms_n: (ssr / n).sqrt(),
+        ..base
     }
 }
 
@@ -456,7 +584,7 @@ impl<T: Real> CalibrationLearner<T> {
                 return Ok(());
             }
         };
-        if !self.steady.accepts(m) || self.pending.front().is_some_and(|p| p.3 != up) {
+        if !self.steady.accepts(m) || self.pending.front().is_some_and(|p| p.4 != up) {
             // The motion was not steady: nor were the last `lookahead_s`.
             self.pending.clear();
             if !self.steady.accepts(m) {
@@ -469,31 +597,32 @@ impl<T: Real> CalibrationLearner<T> {
         let x = (at_load + inertia).abs();
         self.steady_per_kg += f.per_kg;
         let now = m.moving_for_s;
-        while let Some(&(t, _, _, _)) = self.pending.front() {
+        let v = m.boom.rate_rad_s.abs();
+        while let Some(&(t, _, _, _, _)) = self.pending.front() {
             if now - t < self.steady.lookahead_s && !self.pending.is_full() {
                 break;
             }
-            if let Some((_, x, r, up)) = self.pending.pop_front() {
-                self.commit(x, r, up);
+            if let Some((_, x, v, r, up)) = self.pending.pop_front() {
+                self.commit(x, v, r, up);
             }
         }
         // Not full here: the loop above made room.
-        let _ = self.pending.push_back((now, x, r, up));
+        let _ = self.pending.push_back((now, x, v, r, up));
         Ok(())
     }
 
-    fn commit(&mut self, x: T, r: T, up: bool) {
+    fn commit(&mut self, x: T, v: T, r: T, up: bool) {
         if up {
-            self.up.add(x, r);
+            self.up.add_at_rate(x, v, r);
         } else {
-            self.down.add(x, r);
+            self.down.add_at_rate(x, v, r);
         }
         if let Some(c) = &self.check {
             let d = if up { Direction::Up } else { Direction::Down };
-            // The law's prediction of r at the true force x.
+            // The law's prediction of r at the true force x and rate v.
             let (a, b) = c.law(d).unwrap_or((T::lit(0.0), T::lit(0.0)));
             let s = if up { T::lit(1.0) } else { T::lit(-1.0) };
-            let e = (r - c.force_offset_n - s * (a + b * x)).abs();
+            let e = (r - c.force_offset_n - s * (a + b * x + c.per_rate(d) * v)).abs();
             let slot = if up { &mut self.max_residual.0 } else { &mut self.max_residual.1 };
             *slot = slot.max(e);
         }
@@ -603,7 +732,7 @@ impl<T: Real> CalibrationLearner<T> {
         for (m, s, d) in [(self.up, one, Direction::Up), (self.down, -one, Direction::Down)] {
             let (a, b) = cal.law(d)?;
             sum += T::lit(f64::from(m.n))
-                * (m.mean_y - cal.force_offset_n - s * (a + b * m.mean_x));
+                * (m.mean_y - cal.force_offset_n - s * (a + b * m.mean_x + cal.per_rate(d) * m.mean_v));
         }
         let n = self.up.n.saturating_add(self.down.n);
         (n > 0).then(|| sum / T::lit(f64::from(n)))
@@ -633,17 +762,19 @@ impl<T: Real> CalibrationLearner<T> {
                 ((c_up + c_down) * T::lit(0.5), false)
             }
         };
-        let up = fit_direction(&self.up, one, offset);
-        let down = fit_direction(&self.down, -one, offset);
+        let up = fit_with_rate(&self.up, one, offset, fit_direction(&self.up, one, offset));
+        let down = fit_with_rate(&self.down, -one, offset, fit_direction(&self.down, -one, offset));
         let cal = Calibration {
             friction_up_n: up.a_n,
             friction_down_n: down.a_n,
             friction_up_per_force: up.b,
             friction_down_per_force: down.b,
+            friction_up_per_rate: up.c,
+            friction_down_per_rate: down.c,
             force_offset_n: offset,
             ..Calibration::none()
         };
-        let finite = [offset, up.a_n, up.b, up.rms_n, down.a_n, down.b, down.rms_n]
+        let finite = [offset, up.a_n, up.b, up.c, up.rms_n, down.a_n, down.b, down.c, down.rms_n]
             .iter()
             .all(|v| v.is_finite());
         if !finite {
@@ -673,6 +804,95 @@ impl<T: Real> DirectionFit<T> {
             self.raw_b.max(T::lit(0.0)).min(T::lit(MAX_PER_FORCE))
         } else {
             T::lit(0.0)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Steady samples of one direction (sign `s`) of a crane whose friction
+    /// is a + b·F + c·|ω|, at the boom rates `rates` (rad/s) over forces
+    /// sweeping 200–400 kN, with ±300 N of deterministic noise.
+    fn moments(s: f64, (a, b, c): (f64, f64, f64), offset: f64, rates: &[f64]) -> Moments<f64> {
+        let mut m = Moments::new();
+        for &rate in rates {
+            // The run's own phase of wander and noise.
+            let k = rate * 30.0;
+            for i in 0..400 {
+                let f = 200_000.0 + 500.0 * f64::from(i);
+                // The rate wanders ±3 % as a luff's does.
+                let v = rate * (1.0 + 0.03 * (0.05 * f64::from(i) + k).sin());
+                let noise = 300.0 * (1.7 * f64::from(i) + 0.3 * k).sin();
+                m.add_at_rate(f, v, offset + s * (a + b * f + c * v) + noise);
+            }
+        }
+        m
+    }
+
+    fn fit(m: &Moments<f64>, s: f64, offset: f64) -> DirectionFit<f64> {
+        fit_with_rate(m, s, offset, fit_direction(m, s, offset))
+    }
+
+    /// Runs at two speeds (a 10 s and a 30 s luff over 40°: 0.07 and 0.023
+    /// rad/s) give the friction per unit rate, up and down, with the seal
+    /// law's slope beside it.
+    #[test]
+    fn runs_at_two_speeds_learn_the_friction_per_unit_rate() {
+        for (s, law) in [(1.0, (6_000.0, 0.0, 140_000.0)), (-1.0, (4_000.0, 0.01, 95_000.0))] {
+            let m = moments(s, law, 150.0, &[0.07, 0.023]);
+            let f = fit(&m, s, 150.0);
+            assert!(f.rate_observable, "{f:?}");
+            assert!((f.c - law.2).abs() < 3_000.0, "c {} for {}", f.c, law.2);
+            assert!((f.a_n - law.0).abs() < 300.0, "a {} for {}", f.a_n, law.0);
+            assert!((f.b - law.1).abs() < 0.002, "b {} for {}", f.b, law.1);
+            assert!(f.rms_n < 400.0, "{f:?}");
+        }
+    }
+
+    /// One speed cannot tell the rate's part from the constant one: c is
+    /// not observable, stays 0, and the constant part takes the run's
+    /// friction at its speed (what the calibration learned before c).
+    #[test]
+    fn one_speed_leaves_the_friction_per_unit_rate_at_zero() {
+        let law = (6_000.0, 0.0, 140_000.0);
+        let m = moments(1.0, law, 0.0, &[0.07]);
+        let f = fit(&m, 1.0, 0.0);
+        assert!(!f.rate_observable && f.c == 0.0, "{f:?}");
+        assert!((f.a_n - (6_000.0 + 140_000.0 * 0.07)).abs() < 500.0, "{f:?}");
+    }
+
+    /// A friction that does not grow with the rate, seen at two speeds,
+    /// learns no rate part to speak of (under 50 N at 0.07 rad/s).
+    #[test]
+    fn a_constant_friction_at_two_speeds_learns_no_rate_part() {
+        for s in [1.0, -1.0] {
+            let m = moments(s, (12_000.0, 0.02, 0.0), -500.0, &[0.07, 0.023]);
+            let f = fit(&m, s, -500.0);
+            assert!(f.c * 0.07 < 50.0, "{f:?}");
+            assert!((f.a_n - 12_000.0).abs() < 300.0 && (f.b - 0.02).abs() < 0.002, "{f:?}");
+        }
+    }
+
+    /// The moments of two runs merged are those of both runs' samples added
+    /// one by one (Chan's formula, the rate's moments included).
+    #[test]
+    fn merged_moments_are_the_moments_of_all_samples() {
+        let one = moments(1.0, (6_000.0, 0.01, 140_000.0), 0.0, &[0.07]);
+        let two = moments(1.0, (6_000.0, 0.01, 140_000.0), 0.0, &[0.023]);
+        let all = moments(1.0, (6_000.0, 0.01, 140_000.0), 0.0, &[0.07, 0.023]);
+        let mut merged = one;
+        merged.merge(&two);
+        let close = |x: f64, y: f64| (x - y).abs() <= 1e-9 * x.abs().max(y.abs()).max(1.0);
+        for (x, y) in [
+            (merged.mean_v, all.mean_v),
+            (merged.cvv, all.cvv),
+            (merged.cxv, all.cxv),
+            (merged.cvy, all.cvy),
+            (merged.cxy, all.cxy),
+        ] {
+            assert!(close(x, y), "{x} vs {y}");
         }
     }
 }

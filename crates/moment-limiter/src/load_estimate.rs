@@ -6,11 +6,15 @@
 //! (the up and down traces of the thesis differ by it), and a zero offset:
 //!
 //! F_meas = F_model(W) + force_offset + friction(direction), with
-//! friction(Up) = +(a_up + b_up·|F|), friction(Down) = −(a_down + b_down·|F|),
+//! friction(Up) = +(a_up + b_up·|F| + c_up·|ω|),
+//! friction(Down) = −(a_down + b_down·|F| + c_down·|ω|),
 //!
 //! where F is the piston force the cylinder really exerts (the seal is
 //! pressed harder the higher the pressure behind it: the constant a is
-//! `friction_*_n`, the share b is `friction_*_per_force`), and W solves
+//! `friction_*_n`, the share b is `friction_*_per_force`), ω the boom's
+//! filtered rate (a friction that grows with the piston's speed, the rate
+//! times the cylinder's lever: c is `friction_*_per_rate`, learned from runs
+//! at two speeds, [`crate::calibration`]), and W solves
 //! F_model(W) = F_meas − force_offset − friction(direction).
 //!
 //! **Which force the seal law takes.** F is the true force F_meas −
@@ -20,9 +24,9 @@
 //! feeds back through the estimate's own filters), while the true force
 //! follows from the measured one in closed form. With s = ±1 the sign of
 //! the motion and F ≥ 0 (the boom hangs on the piston side),
-//! F_meas − offset = F + s·(a + b·F), so
+//! F_meas − offset = F + s·(a + c·|ω| + b·F), so
 //!
-//! F = (F_meas − offset − s·a)/(1 + s·b), friction = (F_meas − offset) − F,
+//! F = (F_meas − offset − s·(a + c·|ω|))/(1 + s·b), friction = (F_meas − offset) − F,
 //!
 //! one division, no iteration, exact for the seal law (the measured force
 //! in place of F would be off by b²·F, 0.16 % of F at b = 0.04). The bound
@@ -35,7 +39,8 @@
 //! **When the boom is still**, the seals release: the friction the last
 //! motion left in the force relaxes to zero within about a second (the
 //! pressure settles to what holds the load), and before any motion there is
-//! none. The limiter removes the last motion's friction times a share that
+//! none. The limiter removes the last motion's friction (at no rate: the
+//! rate's part goes with the motion) times a share that
 //! is 1 when the filtered rate says the boom stopped and decays with
 //! [`crate::cycle::LimiterConfig::seal_release_s`] (the filtered force
 //! lags the stop by as much as the filtered rate does). Taking half the
@@ -233,6 +238,11 @@ pub enum Friction {
 /// a fifth of the force is worn out, and 1 ± b stays far from 0.
 pub const MAX_PER_FORCE: f64 = 0.2;
 
+/// Largest friction per unit boom rate c (N·s/rad): 40 kN, the largest
+/// constant part a calibration file may hold, at 0.1 rad/s (a 10 s luff
+/// over 57°).
+pub const MAX_PER_RATE_N_S: f64 = 400_000.0;
+
 /// Longest angle-sensor lag a calibration may hold (s): a pendulum or
 /// potentiometer lagging the boom by half a second misreads a 10 s move by
 /// 4°; it is broken or mounted wrong, not something to correct for.
@@ -250,6 +260,12 @@ pub struct Calibration<T> {
     pub friction_up_per_force: T,
     /// Seal friction while luffing down per newton of piston force (b_down, ≥ 0).
     pub friction_down_per_force: T,
+    /// Friction while luffing up per unit boom rate (c_up, N·s/rad, ≥ 0):
+    /// a friction that grows with the piston's speed (the piston's speed is
+    /// the boom's rate times the cylinder's lever da/dθ).
+    pub friction_up_per_rate: T,
+    /// Friction while luffing down per unit boom rate (c_down, N·s/rad, ≥ 0).
+    pub friction_down_per_rate: T,
     /// Zero-load force offset (N): transducer offsets and model error at W = 0.
     pub force_offset_n: T,
     /// Zero offset of p1 (bar), subtracted before eq. 4.1.
@@ -275,6 +291,8 @@ impl<T: Real> Calibration<T> {
             friction_down_n: z,
             friction_up_per_force: z,
             friction_down_per_force: z,
+            friction_up_per_rate: z,
+            friction_down_per_rate: z,
             force_offset_n: z,
             p1_offset_bar: z,
             p2_offset_bar: z,
@@ -300,6 +318,9 @@ impl<T: Real> Calibration<T> {
             && [self.friction_up_per_force, self.friction_down_per_force]
                 .iter()
                 .all(|b| b.is_finite() && *b >= T::lit(0.0) && *b <= T::lit(MAX_PER_FORCE))
+            && [self.friction_up_per_rate, self.friction_down_per_rate]
+                .iter()
+                .all(|c| c.is_finite() && *c >= T::lit(0.0) && *c <= T::lit(MAX_PER_RATE_N_S))
             && self
                 .angle_sensor_lag_s
                 .is_none_or(|l| l.is_finite() && l >= T::lit(0.0) && l <= T::lit(MAX_ANGLE_SENSOR_LAG_S))
@@ -315,13 +336,26 @@ impl<T: Real> Calibration<T> {
         }
     }
 
+    /// The friction per unit boom rate c of a direction of motion (N·s/rad;
+    /// 0 for `Still`).
+    pub fn per_rate(&self, direction: Direction) -> T {
+        match direction {
+            Direction::Up => self.friction_up_per_rate,
+            Direction::Down => self.friction_down_per_rate,
+            Direction::Still => T::lit(0.0),
+        }
+    }
+
     /// Signed friction (N) in a measured force `force_n` (offset removed)
-    /// for a direction of motion: the seal law solved for the true force
-    /// (see the module doc), F = (F_meas − s·a)/(1 + s·b).
-    pub fn friction_n(&self, direction: Direction, force_n: T) -> T {
+    /// for a direction of motion at boom rate `rate_rad_s`: the seal law
+    /// solved for the true force (see the module doc),
+    /// F = (F_meas − s·(a + c·|ω|))/(1 + s·b).
+    pub fn friction_n(&self, direction: Direction, force_n: T, rate_rad_s: T) -> T {
         let Some((a, b)) = self.law(direction) else {
             return T::lit(0.0);
         };
+        let speed = if rate_rad_s.is_finite() { rate_rad_s.abs() } else { T::lit(0.0) };
+        let a = a + self.per_rate(direction) * speed;
         let one = T::lit(1.0);
         let (s, sa) = if direction == Direction::Up {
             (one, a)
@@ -347,12 +381,13 @@ impl<T: Real> Calibration<T> {
     /// still, the last motion's friction times `static_share` (1 at the
     /// stop, decaying to 0 as the seals release; see the module doc), none
     /// before any motion.
-    pub fn correction_n(&self, friction: Friction, static_share: T, force_n: T) -> T {
+    pub fn correction_n(&self, friction: Friction, static_share: T, force_n: T, rate_rad_s: T) -> T {
         match friction {
-            Friction::Sliding(d) => self.friction_n(d, force_n),
+            Friction::Sliding(d) => self.friction_n(d, force_n, rate_rad_s),
+            // The speed's part is gone as the boom stops.
             Friction::Static {
                 last_moving: Some(d),
-            } => self.friction_n(d, force_n) * static_share,
+            } => self.friction_n(d, force_n, T::lit(0.0)) * static_share,
             Friction::Static { last_moving: None } => T::lit(0.0),
         }
     }
@@ -406,6 +441,7 @@ pub fn estimate_load_kg<T: Real>(
         calibration,
         friction,
         T::lit(0.0),
+        T::lit(0.0),
     )?;
     let f = f.scale_load_part(T::lit(1.0) + terms.tan_angle * tan_swing);
     f.solve(force).ok_or(EstimateError::NotObservable)
@@ -424,6 +460,7 @@ pub fn load_equation<T: Real>(
     calibration: &Calibration<T>,
     friction: Friction,
     static_share: T,
+    rate_rad_s: T,
 ) -> Result<(Quadratic<T>, T), EstimateError> {
     let inertia = terms.piston_force_per_boom_accel * accel_rad_s2;
     let f = terms.piston_force;
@@ -433,7 +470,7 @@ pub fn load_equation<T: Real>(
     let force_n = force_n - calibration.force_offset_n;
     Ok((
         f,
-        force_n - inertia - calibration.correction_n(friction, static_share, force_n),
+        force_n - inertia - calibration.correction_n(friction, static_share, force_n, rate_rad_s),
     ))
 }
 
@@ -517,20 +554,52 @@ mod tests {
             ..Calibration::<f64>::none()
         };
         let at = |last_moving, share| {
-            cal.correction_n(Friction::Static { last_moving }, share, 1000.0)
+            cal.correction_n(Friction::Static { last_moving }, share, 1000.0, 0.0)
         };
         assert_eq!(
-            cal.correction_n(Friction::Sliding(Direction::Up), 0.3, 1000.0),
+            cal.correction_n(Friction::Sliding(Direction::Up), 0.3, 1000.0, 0.0),
             12.0
         );
         assert_eq!(
-            cal.correction_n(Friction::Sliding(Direction::Down), 0.3, 1000.0),
+            cal.correction_n(Friction::Sliding(Direction::Down), 0.3, 1000.0, 0.0),
             -8.0
         );
         assert_eq!(at(Some(Direction::Up), 1.0), 12.0);
         assert_eq!(at(Some(Direction::Up), 0.5), 6.0);
         assert_eq!(at(Some(Direction::Down), 0.25), -2.0);
         assert_eq!(at(None, 1.0), 0.0);
+    }
+
+    /// The part of the friction that grows with the rate, c·|ω|, is the
+    /// rate's in either direction and gone at a stop: a still boom's
+    /// friction is the last motion's at no rate, times its share.
+    #[test]
+    fn the_friction_per_unit_rate_is_taken_at_the_boom_rate() {
+        let cal = Calibration {
+            friction_up_n: 6_000.0,
+            friction_down_n: 4_000.0,
+            friction_up_per_force: 0.01,
+            friction_up_per_rate: 140_000.0,
+            friction_down_per_rate: 90_000.0,
+            ..Calibration::<f64>::none()
+        };
+        for (rate, f) in [(0.07, 300_000.0), (-0.07, 300_000.0), (0.02, 50_000.0)] {
+            let up = f + 6_000.0 + 0.01 * f + 140_000.0 * f64::abs(rate);
+            let down = f - 4_000.0 - 90_000.0 * f64::abs(rate);
+            let fu = cal.correction_n(Friction::Sliding(Direction::Up), 1.0, up, rate);
+            let fd = cal.correction_n(Friction::Sliding(Direction::Down), 1.0, down, rate);
+            assert!((up - fu - f).abs() < 1e-6, "up at {f}, {rate} rad/s: {fu}");
+            assert!((down - fd - f).abs() < 1e-6, "down at {f}, {rate} rad/s: {fd}");
+        }
+        let still = cal.correction_n(Friction::Static { last_moving: Some(Direction::Down) }, 0.5, 1e5, 0.07);
+        assert_eq!(still, -2_000.0);
+        // A rate that is not a number adds nothing.
+        assert_eq!(cal.friction_n(Direction::Down, 1e5, f64::NAN), -4_000.0);
+        // Bounds: c within 0 … MAX_PER_RATE_N_S.
+        assert!(cal.is_valid());
+        assert!(!Calibration { friction_up_per_rate: -1.0, ..cal }.is_valid());
+        assert!(!Calibration { friction_down_per_rate: 2.0 * MAX_PER_RATE_N_S, ..cal }.is_valid());
+        assert!(!Calibration { friction_down_per_rate: f64::NAN, ..cal }.is_valid());
     }
 
     #[test]
@@ -546,8 +615,8 @@ mod tests {
         for f in [0.0, 50_000.0, 400_000.0] {
             let up = f + 5_000.0 + 0.03 * f;
             let down = f - 3_000.0 - 0.02 * f;
-            let fu = cal.friction_n(Direction::Up, up);
-            let fd = cal.friction_n(Direction::Down, down);
+            let fu = cal.friction_n(Direction::Up, up, 0.0);
+            let fd = cal.friction_n(Direction::Down, down, 0.0);
             assert!((up - fu - f).abs() < 1e-6, "up at {f}: {fu}");
             assert!((down - fd - f).abs() < 1e-6, "down at {f}: {fd}");
         }
@@ -558,8 +627,8 @@ mod tests {
             ..Calibration::<f32>::none()
         };
         let f = 400_000.0f32;
-        let got = c32.friction_n(Direction::Up, f + 5_000.0 + 0.03 * f);
+        let got = c32.friction_n(Direction::Up, f + 5_000.0 + 0.03 * f, 0.0);
         assert!((got - 17_000.0).abs() < 1.0, "{got}");
-        assert_eq!(cal.friction_n(Direction::Still, 1e5), 0.0);
+        assert_eq!(cal.friction_n(Direction::Still, 1e5, 0.0), 0.0);
     }
 }

@@ -3,8 +3,9 @@
 //! Learns the angle sensor's lag (`moment_limiter::sensor_lag`, from the
 //! unloaded runs: searched as a first-order lag and as pendulums of three
 //! dampings, the lag on a steady rate of the shape that fits best), then
-//! the cylinder's seal friction law per direction, friction = a + b·|F|,
-//! and the force offset from unloaded boom-up and boom-down logs and,
+//! the cylinder's friction law per direction, friction = a + b·|F| + c·|ω|
+//! (c, the part that grows with the boom's rate ω, where runs at two speeds
+//! show it), and the force offset from unloaded boom-up and boom-down logs and,
 //! when given, runs with a known test weight W (SAE J376 calibrates with test
 //! weights): each log is run through the limiter's own signal chain
 //! (filters, direction of motion) with no calibration, and
@@ -22,7 +23,7 @@
 //! disagrees with its stated weight, a law out of the schema's bounds.
 //!
 //! The file is written in the calibration schema
-//! (`moment_limiter::tools::config_file`, version 3) and only if every value is
+//! (`moment_limiter::tools::config_file`, version 4) and only if every value is
 //! within its physical bounds, so the replay and the firmware accept it.
 //!
 //! Exit codes: 0 written; 1 refused (above) or a log could not be read.
@@ -289,6 +290,33 @@ fn friction_opposes_the_motion(learned: &Learned<f64>) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// Share of the fastest unloaded run's steady rate (of its direction) a run
+/// needs to enter the lag search: a lag shows in proportion to the rate, so
+/// a 30 s run beside a 10 s one adds three times the samples and a third of
+/// the lag's signature, and with it the search's residual went flat (the
+/// lag not learned) where the 10 s runs alone learned it.
+const LAG_RUN_SPEED_SHARE: f64 = 0.6;
+
+/// The unloaded runs the angle sensor's lag is searched over: those at
+/// least [`LAG_RUN_SPEED_SHARE`] as fast as the fastest of their direction
+/// (each run's direction is the one it has more steady samples of; its
+/// rate their mean, through the limiter at the lag `lag_s`).
+fn fastest_unloaded_runs(logs: &[Log], lag_s: f64) -> anyhow::Result<Vec<&Log>> {
+    let mut rated = Vec::new();
+    for log in logs.iter().filter(|l| l.load_kg == 0.0) {
+        let (up, down) = learn_log(log, lag_s, false)?.learner.moments();
+        let (is_up, rate) = if up.n >= down.n { (true, up.mean_v) } else { (false, down.mean_v) };
+        rated.push((log, is_up, rate));
+    }
+    let fastest = |dir: bool| rated.iter().filter(|r| r.1 == dir).map(|r| r.2).fold(0.0f64, f64::max);
+    let (up_max, down_max) = (fastest(true), fastest(false));
+    Ok(rated
+        .iter()
+        .filter(|(_, is_up, rate)| *rate >= LAG_RUN_SPEED_SHARE * if *is_up { up_max } else { down_max })
+        .map(|r| r.0)
+        .collect())
+}
+
 /// How `crane-sim calibrate` names the sensor shape that fitted best, with
 /// its steady-rate lag `lag_s`.
 fn shape_text(shape: SensorShape, lag_s: f64) -> String {
@@ -318,15 +346,22 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
     // luffed in 30 s the search's minimum went to the 0.5 s bound). Each
     // sensor shape is its own search, so they run side by side.
     let default_lag_s = LimiterConfig::<f64>::standard().angle_sensor_lag_s;
+    let lag_logs = fastest_unloaded_runs(&logs, default_lag_s)?;
     let fits = SENSOR_SHAPES
         .par_iter()
         .map(|&shape| {
+            // Each run's own lines: runs at two speeds carry two frictions
+            // where the friction grows with the rate, which one line per
+            // direction over both cannot fit whatever the lag (the residual
+            // went flat, and the lag was not learned).
             let fit = fit_lag(default_lag_s, |lag_s| {
-                let mut all = CalibrationLearner::<f64>::new();
-                for log in logs.iter().filter(|l| l.load_kg == 0.0) {
-                    all.merge(&learn_log_with(log, SensorCandidate { shape, lag_s }, false, SteadyMotion::lag_search())?.learner);
+                let (mut ssr, mut n) = (0.0, 0u32);
+                for log in &lag_logs {
+                    let (s, k) = learn_log_with(log, SensorCandidate { shape, lag_s }, false, SteadyMotion::lag_search())?.learner.line_ssr();
+                    ssr += s;
+                    n = n.saturating_add(k);
                 }
-                anyhow::Ok(all.line_ssr())
+                anyhow::Ok((ssr, n))
             })?;
             anyhow::Ok((shape, fit))
         })
@@ -436,11 +471,13 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
     let mut out = crate::stdout::stdout();
     writeln!(
         out,
-        "friction_up_n={:.1} friction_up_per_force={:.5} friction_down_n={:.1} friction_down_per_force={:.5} force_offset_n={:.1} angle_sensor_lag_s={:.3} samples_up={samples_up} samples_down={samples_down} -> {}",
+        "friction_up_n={:.1} friction_up_per_force={:.5} friction_down_n={:.1} friction_down_per_force={:.5} friction_up_per_rate={:.0} friction_down_per_rate={:.0} force_offset_n={:.1} angle_sensor_lag_s={:.3} samples_up={samples_up} samples_down={samples_down} -> {}",
         cal.friction_up_n,
         cal.friction_up_per_force,
         cal.friction_down_n,
         cal.friction_down_per_force,
+        cal.friction_up_per_rate,
+        cal.friction_down_per_rate,
         cal.force_offset_n,
         lag.lag_s,
         args.out.display()
@@ -451,7 +488,7 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
         let w: Vec<String> = known.iter().map(|(w, _)| format!("{w:.0}")).collect();
         format!("{} unloaded run(s) and test weights {} kg", args.logs.len(), w.join(", "))
     };
-    writeln!(out, "fit over {runs_text}: friction = a + b*|F| per direction")?;
+    writeln!(out, "fit over {runs_text}: friction = a + b*|F| + c*|w| per direction (w the boom rate, rad/s)")?;
     for (dir, f, mx) in [("up", learned.up, max.0), ("down", learned.down, max.1)] {
         let b_note = if f.slope_observable && f.raw_b < 0.0 {
             format!(
@@ -475,10 +512,21 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
                 f.b_se
             )
         };
+        let c_note = if f.rate_observable {
+            format!(
+                "c learned ({:.0} +- {:.0} N*s/rad, rate {:.3} +- {:.3} rad/s)",
+                f.c, f.c_se, f.rate_mean, f.rate_sd
+            )
+        } else {
+            format!(
+                "c NOT observable or not above 0 (rate spread {:.3} of {:.3} rad/s): c = 0, the constant part holds the friction at these runs' speed; add runs at another speed (a 30 s luff besides the 10 s one)",
+                f.rate_sd, f.rate_mean
+            )
+        };
         writeln!(
             out,
-            "  {dir:<4} a={:.1} N b={:.5} samples={} residual rms={:.1} N max={:.1} N; {b_note}",
-            f.a_n, f.b, f.n, f.rms_n, mx
+            "  {dir:<4} a={:.1} N b={:.5} c={:.0} N*s/rad samples={} residual rms={:.1} N max={:.1} N; {b_note}; {c_note}",
+            f.a_n, f.b, f.c, f.n, f.rms_n, mx
         )?;
     }
     if lag.observable {

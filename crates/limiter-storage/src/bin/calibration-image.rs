@@ -14,7 +14,7 @@
 //!   `probe-rs download --chip STM32F405RGTx --binary-format bin
 //!   --base-address 0x08080000 OUT.bin`. It replaces the whole range: the
 //!   fault latch and the boot counter start afresh (a service action).
-//! - `--blob`: `OUT.bin` is the 84-byte blob alone (format 3).
+//! - `--blob`: `OUT.bin` is the 100-byte blob alone (format 4).
 //!
 //! Exit codes: 0 written, 1 refused file or usage or I/O error.
 

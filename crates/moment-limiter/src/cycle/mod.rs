@@ -506,6 +506,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             &self.config.calibration,
             m.friction,
             m.static_friction_share,
+            m.boom.rate_rad_s,
         )
         .map_err(Fault::Estimate)?;
         // The force without the sensor's lag, for a still boom (the model's
@@ -517,6 +518,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             &self.config.calibration,
             m.friction,
             m.static_friction_share,
+            m.boom.rate_rad_s,
         )
         .ok()
         .map(|(_, f)| f);

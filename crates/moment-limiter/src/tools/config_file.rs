@@ -2,7 +2,7 @@
 //! writer, `no_std` and without a heap, shared by `crane-sim` and the
 //! firmware (SPEC §4.9) so the two cannot disagree about a file.
 //!
-//! ## Schema, version 3 (versions 1 and 2 still read)
+//! ## Schema, version 4 (versions 1, 2 and 3 still read)
 //!
 //! One JSON object; **every key is required, no other key is allowed**, each
 //! value is a JSON number within the bounds below (finite; the bounds are
@@ -11,7 +11,7 @@
 //!
 //! | key | unit | bounds | why |
 //! |---|---|---|---|
-//! | `version` | — | 3 (or 2, 1) | the schema version of the file |
+//! | `version` | — | 4 (or 3, 2, 1) | the schema version of the file |
 //! | `friction_up_n` | N | 0 … 40 000 | constant part a of the cylinder's seal friction luffing up: ≤ 5 % of the 831 kN the cylinder exerts at 200 bar |
 //! | `friction_down_n` | N | 0 … 40 000 | the same, luffing down |
 //! | `force_offset_n` | N | −25 000 … 25 000 | zero-load force offset: ≤ 3 % of 831 kN (both transducers' ±2 % zero tolerance, 16.6 kN, plus the model's error at W = 0) |
@@ -21,6 +21,8 @@
 //! | `friction_up_per_force` | — | 0 … 0.2 | pressure-proportional part b of the seal friction luffing up (friction = a + b·\|F\|, [`crate::load_estimate`]): a seal taking a fifth of the force is worn out |
 //! | `friction_down_per_force` | — | 0 … 0.2 | the same, luffing down |
 //! | `angle_sensor_lag_s` | s | 0 … 0.5 | the angle sensor's lag behind the boom (first-order equivalent, [`crate::calibration`]; a pendulum's 2ζ/ω_n): half a second misreads a 10 s move by 4°, a broken or badly mounted sensor |
+//! | `friction_up_per_rate` | N·s/rad | 0 … 400 000 | the part c of the friction luffing up that grows with the boom's rate ω (friction = a + b·\|F\| + c·\|ω\|, [`crate::load_estimate`]): 40 kN, the constant part's bound, at 0.1 rad/s (a 10 s luff over 57°) |
+//! | `friction_down_per_rate` | N·s/rad | 0 … 400 000 | the same, luffing down |
 //!
 //! **Version 1** files (written before the seal law) have the first six
 //! keys only and read as b = 0 (constant friction per direction), exactly
@@ -29,8 +31,11 @@
 //! (written before the lag was learned) have the first eight keys and read
 //! with no lag ([`Calibration::angle_sensor_lag_s`] `None`): the limiter
 //! aligns with its configured lag, exactly as it did when they were
-//! written. A key a file's version does not have is refused. The writer
-//! writes version 3; a calibration without a lag is written with the
+//! written. **Version 3** files (written before the friction's part that
+//! grows with the rate was learned) have the first nine keys and read as
+//! c = 0, the friction they were applied with. A key a file's version does
+//! not have is refused. The writer writes version 4; a calibration without
+//! a lag is written with the
 //! standard configuration's lag ([`crate::cycle::DEFAULT_ANGLE_SENSOR_LAG_S`],
 //! what the limiter used for it).
 //!
@@ -56,8 +61,16 @@ use crane_model::Real;
 use crate::load_estimate::Calibration;
 
 /// The schema version the writer writes (the reader also reads
-/// [`CALIBRATION_VERSION_1`] and [`CALIBRATION_VERSION_2`]).
-pub const CALIBRATION_VERSION: u32 = 3;
+/// [`CALIBRATION_VERSION_1`], [`CALIBRATION_VERSION_2`] and
+/// [`CALIBRATION_VERSION_3`]).
+pub const CALIBRATION_VERSION: u32 = 4;
+
+/// The third schema version: the seal law and the lag, no friction per
+/// unit rate (the first [`V3_KEYS`] keys of [`CALIBRATION_KEYS`]).
+pub const CALIBRATION_VERSION_3: u32 = 3;
+
+/// Number of keys of schema version 3 (the first ones of [`CALIBRATION_KEYS`]).
+pub const V3_KEYS: usize = 9;
 
 /// The second schema version: the seal law, no lag (the first [`V2_KEYS`]
 /// keys of [`CALIBRATION_KEYS`]).
@@ -66,8 +79,8 @@ pub const CALIBRATION_VERSION_2: u32 = 2;
 /// Number of keys of schema version 2 (the first ones of [`CALIBRATION_KEYS`]).
 pub const V2_KEYS: usize = 8;
 
-/// Number of keys of schema version 3.
-pub const KEY_COUNT: usize = 9;
+/// Number of keys of schema version 4.
+pub const KEY_COUNT: usize = 11;
 
 /// The first schema version: constant friction per direction (the first
 /// [`V1_KEYS`] keys of [`CALIBRATION_KEYS`]).
@@ -97,8 +110,9 @@ pub struct KeySpec {
     pub why: &'static str,
 }
 
-/// The values of schema version 3 (the first [`V1_KEYS`] are version 1's,
-/// the first [`V2_KEYS`] version 2's, in their order; see the module doc
+/// The values of schema version 4 (the first [`V1_KEYS`] are version 1's,
+/// the first [`V2_KEYS`] version 2's, the first [`V3_KEYS`] version 3's,
+/// in their order; see the module doc
 /// for the reasons). The one bound table: the JSON reader, the writer and
 /// the firmware's blob all check against it.
 pub const CALIBRATION_KEYS: [KeySpec; KEY_COUNT] = [
@@ -164,6 +178,20 @@ pub const CALIBRATION_KEYS: [KeySpec; KEY_COUNT] = [
         min: 0.0,
         max: crate::load_estimate::MAX_ANGLE_SENSOR_LAG_S,
         why: "a sensor lagging half a second misreads a 10 s move by 4 degrees",
+    },
+    KeySpec {
+        key: "friction_up_per_rate",
+        unit: "N*s/rad",
+        min: 0.0,
+        max: crate::load_estimate::MAX_PER_RATE_N_S,
+        why: "40 kN, the constant part's bound, at 0.1 rad/s (a 10 s luff over 57 degrees)",
+    },
+    KeySpec {
+        key: "friction_down_per_rate",
+        unit: "N*s/rad",
+        min: 0.0,
+        max: crate::load_estimate::MAX_PER_RATE_N_S,
+        why: "40 kN, the constant part's bound, at 0.1 rad/s (a 10 s luff over 57 degrees)",
     },
 ];
 
@@ -244,7 +272,7 @@ impl fmt::Display for CalibrationFileError {
             E::UnsupportedVersion(v) => write!(
                 f,
                 "key `{VERSION_KEY}` = {}: this reader knows versions \
-                 {CALIBRATION_VERSION_1}, {CALIBRATION_VERSION_2} and {CALIBRATION_VERSION}",
+                 {CALIBRATION_VERSION_1}, {CALIBRATION_VERSION_2}, {CALIBRATION_VERSION_3} and {CALIBRATION_VERSION}",
                 Shown(*v)
             ),
             E::PreSchemaFile => write!(
@@ -274,7 +302,8 @@ impl fmt::Display for Shown {
 }
 
 /// Reads a calibration file (the bytes of `CAL.json`) against the schema
-/// (version 3; version 2 read without a lag, version 1 also as b = 0).
+/// (version 4; version 3 read as c = 0, version 2 also without a lag,
+/// version 1 also as b = 0).
 pub fn parse_calibration<T: Real>(text: &[u8]) -> Result<Calibration<T>, CalibrationFileError> {
     read_object(text).map(|(v, keys)| calibration_from_values(&v, keys)).map_err(|e| match e {
         CalibrationFileError::Syntax { at: 0, .. } if looks_like_log(text) => CalibrationFileError::SensorLog,
@@ -296,6 +325,7 @@ pub fn keys_of_version(version: u32) -> Option<usize> {
     match version {
         CALIBRATION_VERSION_1 => Some(V1_KEYS),
         CALIBRATION_VERSION_2 => Some(V2_KEYS),
+        CALIBRATION_VERSION_3 => Some(V3_KEYS),
         CALIBRATION_VERSION => Some(KEY_COUNT),
         _ => None,
     }
@@ -304,15 +334,18 @@ pub fn keys_of_version(version: u32) -> Option<usize> {
 /// The calibration of the values of [`CALIBRATION_KEYS`], in its order
 /// (checked by the caller), converted to `T`; only the first `keys` are
 /// the file's (its version's), the others take what that version meant:
-/// b = 0 (version 1) and no lag (versions 1 and 2).
+/// b = 0 (version 1), no lag (versions 1 and 2) and c = 0 (versions 1–3).
 pub fn calibration_from_values<T: Real>(values: &[f64; KEY_COUNT], keys: usize) -> Calibration<T> {
-    let [fu, fd, fo, p1, p2, a, bu, bd, lag] = *values;
+    let [fu, fd, fo, p1, p2, a, bu, bd, lag, cu, cd] = *values;
     let (bu, bd) = if keys > V1_KEYS { (bu, bd) } else { (0.0, 0.0) };
+    let (cu, cd) = if keys > V3_KEYS { (cu, cd) } else { (0.0, 0.0) };
     Calibration {
         friction_up_n: T::lit(fu),
         friction_down_n: T::lit(fd),
         friction_up_per_force: T::lit(bu),
         friction_down_per_force: T::lit(bd),
+        friction_up_per_rate: T::lit(cu),
+        friction_down_per_rate: T::lit(cd),
         force_offset_n: T::lit(fo),
         p1_offset_bar: T::lit(p1),
         p2_offset_bar: T::lit(p2),
@@ -331,7 +364,7 @@ pub fn check_calibration(cal: &Calibration<f64>) -> Result<(), CalibrationFileEr
     Ok(())
 }
 
-/// Writes `cal` as a schema-version-3 file (one key per line, trailing
+/// Writes `cal` as a schema-version-4 file (one key per line, trailing
 /// newline). Call [`check_calibration`] first: this writes any value.
 pub fn write_calibration_json<W: Write>(w: &mut W, cal: &Calibration<f64>) -> fmt::Result {
     write!(w, "{{\n  \"{VERSION_KEY}\": {CALIBRATION_VERSION}")?;
@@ -357,9 +390,14 @@ pub fn calibration_values(cal: &Calibration<f64>) -> [f64; KEY_COUNT] {
         cal.friction_down_per_force,
         cal.angle_sensor_lag_s
             .unwrap_or(crate::cycle::DEFAULT_ANGLE_SENSOR_LAG_S),
+        cal.friction_up_per_rate,
+        cal.friction_down_per_rate,
     ]
 }
 
+// Not inlined: the board image checks all eleven bounds in a loop the
+// compiler unrolls, and each inlined copy built its own error (1.6 KB).
+#[inline(never)]
 fn check_bounds(spec: &KeySpec, value: f64) -> Result<(), CalibrationFileError> {
     if value.is_finite() && value >= spec.min && value <= spec.max {
         Ok(())
@@ -441,7 +479,7 @@ impl Findings {
                 }
             };
             self.version = Some(v);
-            if [CALIBRATION_VERSION, CALIBRATION_VERSION_2, CALIBRATION_VERSION_1]
+            if [CALIBRATION_VERSION, CALIBRATION_VERSION_3, CALIBRATION_VERSION_2, CALIBRATION_VERSION_1]
                 .iter()
                 .any(|k| v == f64::from(*k))
             {
@@ -499,7 +537,7 @@ impl Findings {
             return Err(e);
         }
         // A known version (else `version_error` above).
-        let (version, keys) = [CALIBRATION_VERSION_1, CALIBRATION_VERSION_2, CALIBRATION_VERSION]
+        let (version, keys) = [CALIBRATION_VERSION_1, CALIBRATION_VERSION_2, CALIBRATION_VERSION_3, CALIBRATION_VERSION]
             .iter()
             .find(|k| version == f64::from(**k))
             .and_then(|k| Some((*k, keys_of_version(*k)?)))
@@ -684,8 +722,16 @@ impl<'a> Cursor<'a> {
 pub mod hostile {
     use super::CALIBRATION_KEYS;
 
-    /// A valid file of schema version 3 (the base the hostile cases alter).
-    pub const GOOD: &str = r#"{"version": 3, "friction_up_n": 10011.5, "friction_down_n": 9000,
+    /// A valid file of schema version 4 (the base the hostile cases alter).
+    pub const GOOD: &str = r#"{"version": 4, "friction_up_n": 10011.5, "friction_down_n": 9000,
+        "force_offset_n": -1932.4, "p1_offset_bar": 0.5, "p2_offset_bar": -0.25,
+        "angle_offset_deg": 0.0, "friction_up_per_force": 0.025,
+        "friction_down_per_force": 0.0125, "angle_sensor_lag_s": 0.2,
+        "friction_up_per_rate": 120000, "friction_down_per_rate": 80000.5}"#;
+
+    /// A valid file of schema version 3 (the seal law and the lag, no
+    /// friction per unit rate: read as c = 0).
+    pub const GOOD_V3: &str = r#"{"version": 3, "friction_up_n": 10011.5, "friction_down_n": 9000,
         "force_offset_n": -1932.4, "p1_offset_bar": 0.5, "p2_offset_bar": -0.25,
         "angle_offset_deg": 0.0, "friction_up_per_force": 0.025,
         "friction_down_per_force": 0.0125, "angle_sensor_lag_s": 0.2}"#;
@@ -743,14 +789,24 @@ pub mod hostile {
                 "`p1_offset_bar` is given twice",
             ),
             (
-                "version 4".into(),
-                with("version", Some("4")),
-                "`version` = 4: this reader knows versions 1, 2 and 3",
+                "version 5".into(),
+                with("version", Some("5")),
+                "`version` = 5: this reader knows versions 1, 2, 3 and 4",
             ),
             (
                 "version 2.5".into(),
                 with("version", Some("2.5")),
-                "`version` = 2.5: this reader knows versions 1, 2 and 3",
+                "`version` = 2.5: this reader knows versions 1, 2, 3 and 4",
+            ),
+            (
+                "version 3 with a rate key".into(),
+                with("version", Some("3")),
+                "`friction_up_per_rate` is not in calibration schema version 3",
+            ),
+            (
+                "version 3 without version 3's keys".into(),
+                GOOD_V3.replace(", \"angle_sensor_lag_s\": 0.2", ""),
+                "`angle_sensor_lag_s` is missing",
             ),
             (
                 "version 2 with the lag key".into(),
@@ -837,9 +893,10 @@ mod tests {
         let mut text = String::new();
         write_calibration_json(&mut text, &c).unwrap();
         assert_eq!(parse_calibration::<f64>(text.as_bytes()).unwrap(), c);
-        assert!(text.starts_with("{\n  \"version\": 3,\n"), "{text}");
+        assert!(text.starts_with("{\n  \"version\": 4,\n"), "{text}");
         assert_eq!(c.friction_up_per_force, 0.025);
         assert_eq!(c.angle_sensor_lag_s, Some(0.2));
+        assert_eq!((c.friction_up_per_rate, c.friction_down_per_rate), (120_000.0, 80_000.5));
         // BOM and f32.
         let bom = format!("\u{feff}{GOOD}");
         let c32 = parse_calibration::<f32>(bom.as_bytes()).unwrap();
@@ -847,18 +904,33 @@ mod tests {
         assert_eq!(c32.angle_sensor_lag_s, Some(0.2_f32));
     }
 
+    /// A version-3 file (before the friction's part that grows with the
+    /// rate) reads as c = 0, the friction it was applied with, and is
+    /// written again as version 4 with c = 0.
+    #[test]
+    fn a_version_3_file_reads_with_no_friction_per_rate() {
+        use super::hostile::GOOD_V3;
+        let c3 = parse_calibration::<f64>(GOOD_V3.as_bytes()).unwrap();
+        let c4 = parse_calibration::<f64>(GOOD.as_bytes()).unwrap();
+        assert_eq!(c3, Calibration { friction_up_per_rate: 0.0, friction_down_per_rate: 0.0, ..c4 });
+        let mut text = String::new();
+        write_calibration_json(&mut text, &c3).unwrap();
+        assert!(text.contains("\"friction_up_per_rate\": 0.0") && text.starts_with("{\n  \"version\": 4,\n"), "{text}");
+        assert_eq!(parse_calibration::<f64>(text.as_bytes()).unwrap(), c3);
+    }
+
     #[test]
     fn a_version_2_file_reads_without_a_lag() {
-        use super::hostile::GOOD_V2;
+        use super::hostile::{GOOD_V2, GOOD_V3};
         let c2 = parse_calibration::<f64>(GOOD_V2.as_bytes()).unwrap();
-        let c3 = parse_calibration::<f64>(GOOD.as_bytes()).unwrap();
+        let c3 = parse_calibration::<f64>(GOOD_V3.as_bytes()).unwrap();
         assert_eq!(c2, Calibration { angle_sensor_lag_s: None, ..c3 });
         // The limiter then aligns with its configured lag.
         let config = crate::cycle::LimiterConfig { calibration: c2, ..crate::cycle::LimiterConfig::standard() };
         assert_eq!(config.effective_angle_sensor_lag_s(), crate::cycle::DEFAULT_ANGLE_SENSOR_LAG_S);
         let config = crate::cycle::LimiterConfig { calibration: c3, ..config };
         assert_eq!(config.effective_angle_sensor_lag_s(), 0.2);
-        // Re-written, it is a version-3 file with the standard lag.
+        // Re-written, it is a version-4 file with the standard lag.
         let mut text = String::new();
         write_calibration_json(&mut text, &c2).unwrap();
         let back = parse_calibration::<f64>(text.as_bytes()).unwrap();
@@ -884,9 +956,9 @@ mod tests {
 
     #[test]
     fn a_version_1_file_reads_as_constant_friction() {
-        use super::hostile::GOOD_V1;
+        use super::hostile::{GOOD_V1, GOOD_V3};
         let c1 = parse_calibration::<f64>(GOOD_V1.as_bytes()).unwrap();
-        let c2 = parse_calibration::<f64>(GOOD.as_bytes()).unwrap();
+        let c2 = parse_calibration::<f64>(GOOD_V3.as_bytes()).unwrap();
         assert_eq!(c1.friction_up_per_force, 0.0);
         assert_eq!(c1.friction_down_per_force, 0.0);
         assert_eq!(
@@ -898,7 +970,7 @@ mod tests {
                 ..c2
             }
         );
-        // Re-written, it is a version-3 file with b = 0 and the standard lag.
+        // Re-written, it is a version-4 file with b = 0 and the standard lag.
         let mut text = String::new();
         write_calibration_json(&mut text, &c1).unwrap();
         assert!(text.contains("\"friction_up_per_force\": 0.0"), "{text}");
