@@ -156,6 +156,10 @@ thread_local! {
     /// ([`second_formulation`]: a rigid mechanism by Lagrange's equation,
     /// the load a pendulum integrated there), not from the simulator.
     static SECOND_FORMULATION: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+    /// The calibration learns from 30 s unloaded runs up and down besides
+    /// the 10 s ones (`crane-sim calibrate` given runs at two speeds), its
+    /// lag from the 10 s runs alone, as the command does.
+    static TWO_SPEEDS: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
 }
 
 /// The second formulation's crane, built once.
@@ -317,8 +321,12 @@ fn frame<T: Real>(r: &SynthRow) -> Frame<T> {
 /// with it.
 fn calibration_with<T: Real, M: HookLoadModel<T> + Clone>(model_l: &M, seals: Seals) -> Calibration<T> {
     let mut logs = Vec::new();
-    for (dir, seed) in [(Direction::Up, 11), (Direction::Down, 12)] {
-        let mut m = Maneuver::thesis(0.0, 10.0, RampShape::Cycloidal, dir).unwrap();
+    let mut runs = vec![(Direction::Up, 11, 10.0), (Direction::Down, 12, 10.0)];
+    if TWO_SPEEDS.with(|t| t.get()) {
+        runs.extend([(Direction::Up, 13, 30.0), (Direction::Down, 14, 30.0)]);
+    }
+    for (dir, seed, duration_s) in runs {
+        let mut m = Maneuver::thesis(0.0, duration_s, RampShape::Cycloidal, dir).unwrap();
         m.settle_s = 1.0;
         let (options, dt) = options_for_rate(rate_hz());
         let mut samples = simulate(crane(), &m, &options).expect("simulation");
@@ -326,9 +334,9 @@ fn calibration_with<T: Real, M: HookLoadModel<T> + Clone>(model_l: &M, seals: Se
         lag_the_pressures(&mut samples);
         logs.push(synthesize(&samples, dt, 1.0, 0.0, &sensors(seals, seed)));
     }
-    let learn = |sensor: SensorCandidate<T>, steady: SteadyMotion<T>| {
+    let learn = |sensor: SensorCandidate<T>, steady: SteadyMotion<T>, runs: &[Vec<SynthRow>]| {
         let mut learner = CalibrationLearner::with_steady_motion(steady);
-        for rows in &logs {
+        for rows in runs {
             let config = LimiterConfig { angle_sensor_lag_s: sensor.alignment_lag_s(), ..LimiterConfig::standard() };
             let mut lim = Limiter::new(model_l.clone(), config).unwrap();
             let mut pressure_lag = sensor.pressure_lag();
@@ -344,19 +352,22 @@ fn calibration_with<T: Real, M: HookLoadModel<T> + Clone>(model_l: &M, seals: Se
     };
     let default = LimiterConfig::<T>::standard().angle_sensor_lag_s;
     let lag = if LEARN_LAG.with(|l| l.get()) {
-        fit_sensor(default, |sensor| Ok::<_, ()>(learn(sensor, SteadyMotion::lag_search()).line_ssr())).unwrap().lag.lag_s
+        // The 10 s runs, as `crane-sim calibrate` searches the fastest.
+        fit_sensor(default, |sensor| Ok::<_, ()>(learn(sensor, SteadyMotion::lag_search(), &logs[..2]).line_ssr())).unwrap().lag.lag_s
     } else {
         default
     };
-    let cal = learn(SensorCandidate::first_order(lag), SteadyMotion::standard()).finish(50).unwrap();
+    let cal = learn(SensorCandidate::first_order(lag), SteadyMotion::standard(), &logs).finish(50).unwrap();
     println!(
-        "calibration ({seals:?} seals, sensor {:?} {:?}): lag {lag:.3} s, up {:.0} N + {:.4}·F, down {:.0} N + {:.4}·F, offset {:.0} N",
+        "calibration ({seals:?} seals, sensor {:?} {:?}): lag {lag:.3} s, up {:.0} N + {:.4}·F + {:.0}·ω, down {:.0} N + {:.4}·F + {:.0}·ω, offset {:.0} N",
         SENSOR_LAG_S.with(|l| l.get()),
         PENDULUM_2ND.with(|p| p.get()),
         cal.friction_up_n,
         cal.friction_up_per_force,
+        cal.friction_up_per_rate,
         cal.friction_down_n,
         cal.friction_down_per_force,
+        cal.friction_down_per_rate,
         cal.force_offset_n
     );
     Calibration { angle_sensor_lag_s: Some(lag), ..cal }
@@ -399,9 +410,10 @@ fn replay_with<T: Real, M: HookLoadModel<T> + Clone>(model_l: &M, cal: Calibrati
 /// learned, its friction law, its pendulum's zero error, its seals' release
 /// and friction onset, the logs' sample rate, the pendulum's dynamics and
 /// the sensors' noise, the boom's stiffness and damping, the load's clearance on
-/// the paid-out rope, the pressure transducers' lag and whether the second
-/// formulation makes the force.
-type CraneKey = (Option<u64>, bool, Seals, [u64; 13]);
+/// the paid-out rope, the pressure transducers' lag, whether the second
+/// formulation makes the force and whether the calibration has runs at two
+/// speeds.
+type CraneKey = (Option<u64>, bool, Seals, [u64; 14]);
 
 fn replay(sc: &Scenario, precision: Precision) -> Vec<Point> {
     replay_rows(&sc.rows(), sc.seals, precision)
@@ -423,7 +435,7 @@ fn cached<T: Copy>(cache: &Mutex<Vec<(CraneKey, T)>>, seals: Seals, make: impl F
     let boom = BOOM_FACTORS.with(|b| b.get());
     let clearance = LOAD_CLEARANCE_M.with(|c| c.get()).unwrap_or(-1.0);
     let pressure_lag = PRESSURE_LAG_S.with(|l| l.get()).unwrap_or(-1.0);
-    let world = [ANGLE_OFFSET_DEG.with(|o| o.get()), STANDSTILL_RELEASE_S.with(|o| o.get()), FRICTION_ONSET_DEG_S.with(|o| o.get()), rate_hz(), p2.0, p2.1, noise[0], noise[1], boom.0, boom.1, clearance, pressure_lag, f64::from(u8::from(SECOND_FORMULATION.with(|s| s.get())))].map(f64::to_bits);
+    let world = [ANGLE_OFFSET_DEG.with(|o| o.get()), STANDSTILL_RELEASE_S.with(|o| o.get()), FRICTION_ONSET_DEG_S.with(|o| o.get()), rate_hz(), p2.0, p2.1, noise[0], noise[1], boom.0, boom.1, clearance, pressure_lag, f64::from(u8::from(SECOND_FORMULATION.with(|s| s.get()))), f64::from(u8::from(TWO_SPEEDS.with(|t| t.get())))].map(f64::to_bits);
     let key = (SENSOR_LAG_S.with(|l| l.get()).map(f64::to_bits), LEARN_LAG.with(|l| l.get()), seals, world);
     if let Some((_, c)) = cache.lock().unwrap().iter().find(|(k, _)| *k == key) {
         return *c;
@@ -3063,8 +3075,8 @@ fn band_in_motion_and_at_rest_f32() {
 /// past the rated radius cut between true u 1/1.1 and 1.05 (at 0.935–0.967),
 /// lift-off as with the modelled laws. With 140 kN per m/s up (100 down) two
 /// slow lowerings cut early, at true u 0.89; at 200 kN per m/s all 16 slow
-/// ones do. What does not hold is the band:
-/// `band_with_a_speed_dependent_friction_known_gap`.
+/// ones do. What does not hold at one speed is the band; calibrated at two
+/// speeds it does (`band_with_a_speed_dependent_friction_calibrated_at_two_speeds_*`).
 fn a_speed_dependent_friction(precision: Precision) {
     no_false_overload(precision, &ROPES, &[Seals::Viscous]);
     lowering_past_rated_radius(precision, &ROPES, &[Seals::Viscous]);
@@ -3153,8 +3165,8 @@ fn seals_stuck_at_standstill_keep_the_bounds_f32() {
 /// 86 % of the friction the calibration's 10 s runs learned, so raising
 /// reads low, and the move's weighing held at rest after a slow raise to
 /// 80° on the 3 m rope reads 0.957 of a 30 % load: at rest p5 0.997 (in
-/// motion 1.009), the speed-dependent friction's gap
-/// (`band_with_a_speed_dependent_friction_known_gap`) in small.
+/// motion 1.009), the speed-dependent friction's miss at one speed
+/// (`band_with_a_speed_dependent_friction_calibrated_at_one_speed_measured`) in small.
 fn a_sharp_or_blunt_friction_onset(precision: Precision) {
     for (onset, rest_p5_may_miss) in [(0.02, false), (1.0, true)] {
         with_setting(&FRICTION_ONSET_DEG_S, onset, || {
@@ -3314,18 +3326,66 @@ fn a_speed_dependent_friction_f32() {
 }
 
 /// The band under a friction that grows with the piston's speed
-/// ([`Seals::Viscous`]): in 30 s moves at 30 % of rated the estimate reads
-/// 0.93–0.95 raising and 1.08–1.11 lowering, and 0.89–0.95 at rest after a
-/// slow raise (the friction the limiter takes off there is the calibration
-/// run's). Measured: p5/p50/p95 0.899/1.038/1.142 in motion and
-/// 0.820/1.040/1.108 at rest; at 30 kN per m/s up (20 down)
-/// 0.963/1.039/1.087 and 0.914/1.039/1.078. What would close it: a
-/// speed-proportional part in the calibration's friction law, learned
-/// from runs at two speeds (one run's speed sweep is read as lag).
+/// ([`Seals::Viscous`]), calibrated from runs at two speeds (10 s and 30 s
+/// unloaded luffs up and down, [`TWO_SPEEDS`]): the calibration learns the
+/// friction's part per unit boom rate c (`moment_limiter::calibration`),
+/// and the band is within [1.00, 1.10] in motion and at rest, f64 and f32.
+/// Measured (f64): calibration 5.5 kN + 144 kN·s/rad·|ω| up, 4.0 kN +
+/// 98 kN·s/rad·|ω| down (the synthesized 6 kN + 60 kN per m/s and 4 kN +
+/// 40 kN per m/s, the piston's speed 2.0–2.5 m/rad of boom rate); band
+/// p5/p50/p95 1.011/1.036/1.051 in motion, 1.001/1.039/1.054 at rest.
+/// Calibrated from the 10 s runs alone (one speed: c not observable, and
+/// `crane-sim calibrate` says so), as before c was learned: the friction
+/// is learned as a constant of 17 kN up and 11.5 kN down, the friction at
+/// the 10 s runs' speed, and the band is 0.899/1.040/1.143 in motion and
+/// 0.804/1.040/1.108 at rest (a 30 s raise reads 0.85 of the load at its
+/// end): `band_with_a_speed_dependent_friction_calibrated_at_one_speed_measured`.
+fn band_with_a_speed_dependent_friction_calibrated_at_two_speeds(precision: Precision) {
+    with_setting(&TWO_SPEEDS, true, || band_with(precision, &[Seals::Viscous]));
+}
+
+/// The f64 limiter in that world keeps the safety bounds too, as at one
+/// speed ([`other_world`]: no OVERLOAD at 85 %, every lowering past the
+/// rated radius cut between true u 1/1.1 and 1.05, lift-off at 90 % not cut
+/// and at 110 % within 1 s), and the band.
 #[test]
-#[ignore = "KNOWN GAP: a friction that grows with the piston's speed is learned as a constant at the calibration run's speed; slower moves read outside 1.00-1.10 (p5 0.90 in motion, 0.82 at rest)"]
-fn band_with_a_speed_dependent_friction_known_gap() {
-    band_with(Precision::F64, &[Seals::Viscous]);
+fn band_with_a_speed_dependent_friction_calibrated_at_two_speeds_f64() {
+    with_setting(&TWO_SPEEDS, true, || {
+        let (m, r) = other_world(Precision::F64, &[Seals::Viscous]);
+        assert_band("viscous, two speeds", m, r, false);
+    });
+}
+
+#[test]
+fn band_with_a_speed_dependent_friction_calibrated_at_two_speeds_f32() {
+    band_with_a_speed_dependent_friction_calibrated_at_two_speeds(Precision::F32);
+}
+
+/// The same band calibrated at one speed, printed (see
+/// [`band_with_a_speed_dependent_friction_calibrated_at_two_speeds`]):
+/// `cargo test --release -p host-sim --test field_limiter
+/// band_with_a_speed_dependent_friction_calibrated_at_one_speed_measured --
+/// --ignored --nocapture`.
+#[test]
+#[ignore = "measurement: a friction that grows with the speed, calibrated at one speed (c not observable), misses the band (p5 0.90 in motion, 0.80 at rest)"]
+fn band_with_a_speed_dependent_friction_calibrated_at_one_speed_measured() {
+    band_percentiles(Precision::F64, &[Seals::Viscous]);
+}
+
+/// The modelled friction laws calibrated from runs at two speeds: the
+/// rate's part comes out at nothing to speak of (the law has none), and the
+/// band holds as with one speed (`band_in_motion_and_at_rest_f64`).
+#[test]
+fn band_with_the_modelled_laws_calibrated_at_two_speeds() {
+    with_setting(&TWO_SPEEDS, true, || {
+        for seals in SEALS {
+            let cal = calibration_f64(seals);
+            // Under 300 N at 0.07 rad/s (a 10 s luff over 40 degrees).
+            let most = cal.friction_up_per_rate.max(cal.friction_down_per_rate) * 0.07;
+            assert!(most < 300.0, "{seals:?}: {cal:?}");
+        }
+        band(Precision::F64);
+    });
 }
 
 /// Runs `f` with the pendulum reading `offset_deg` off (see

@@ -2,7 +2,7 @@
 //! its calibration from, out of a calibration file.
 //!
 //! The file is read with the one calibration reader
-//! (`moment_limiter::tools::config_file`: schema version 3, 2 or 1, every key required and
+//! (`moment_limiter::tools::config_file`: schema version 4, 3, 2 or 1, every key required and
 //! bounded); a refused file exits 1 with the reader's message, which names
 //! the key. Then:
 //!
