@@ -570,10 +570,35 @@ fn learns_a_friction_that_grows_with_the_rate_from_runs_at_two_speeds() {
     let out = calibrate(&[&up10, &down10], &one);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     let stdout = text(&out.stdout);
-    assert!(stdout.contains("c NOT observable") && stdout.contains("add runs at another speed"), "{stdout}");
+    assert!(stdout.contains("c NOT observable") && stdout.contains("add unloaded runs at another speed"), "{stdout}");
     let j = read_json(&one);
     assert_eq!((key(&j, "friction_up_per_rate"), key(&j, "friction_down_per_rate")), (0.0, 0.0));
     let [(creep_truth, creep_learned), _] = viscous_frictions(&j, 0.005, 60.0);
     println!("one speed: at a creep synthesized {creep_truth:.0} N, learned {creep_learned:.0} N");
     assert!(creep_learned - creep_truth > 8_000.0, "{stdout}");
+
+    // Test weights luffed slowly (30 s) beside unloaded runs at one speed:
+    // c stays 0, only unloaded runs decide it (a test weight's run speed
+    // would stand for its load, whose own errors the fit would take for a
+    // rate's part; a spurious c reads slow lowerings low).
+    let law = ["--friction-law", "viscous", "--friction-up-n", "6000", "--friction-up-b", "60000", "--friction-down-n", "4000", "--friction-down-b", "40000"];
+    let ku = synth_run(dir.path(), "viscous_up_2t.csv", "up", "2000", "30", "5", &law);
+    let kd = synth_run(dir.path(), "viscous_down_2t.csv", "down", "2000", "30", "6", &law);
+    let weighted = dir.path().join("weighted.json");
+    let out = bin()
+        .arg("calibrate")
+        .args([&up10, &down10])
+        .args(["--known-load-kg", "2000"])
+        .arg(&ku)
+        .args(["--known-load-kg", "2000"])
+        .arg(&kd)
+        .arg("--out")
+        .arg(&weighted)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let stdout = text(&out.stdout);
+    assert!(stdout.contains("the unloaded runs' rate spread"), "{stdout}");
+    let j = read_json(&weighted);
+    assert_eq!((key(&j, "friction_up_per_rate"), key(&j, "friction_down_per_rate")), (0.0, 0.0), "{stdout}");
 }

@@ -80,7 +80,10 @@
 //! with a standard error under [`MAX_RATE_SE_N_S`]. At one speed the rate
 //! hardly varies over the steady samples (1 % in a 10 s run): c = 0 and a
 //! holds the friction at that speed, what the calibration learned before c
-//! (`fit_with_rate`; `DirectionFit::rate_observable`).
+//! (`fit_with_rate`; `DirectionFit::rate_observable`). `crane-sim
+//! calibrate` fits c only in the directions whose unloaded runs show it
+//! ([`CalibrationLearner::fit_with_rates`]): test weights are luffed slowly,
+//! and their runs' speed would stand for their load.
 //!
 //! Several runs combine by merging their moments ([`CalibrationLearner::merge`],
 //! Chan's formula): `crane-sim calibrate` learns each log on its own learner,
@@ -746,6 +749,15 @@ impl<T: Real> CalibrationLearner<T> {
     /// The calibration and its fit, if each direction has at least
     /// `min_samples` samples (see the module doc).
     pub fn fit(&self, min_samples: u32) -> Result<Learned<T>, CalibrationError> {
+        self.fit_with_rates(min_samples, (true, true))
+    }
+
+    /// [`Self::fit`] with the friction per unit rate c fitted (where
+    /// observable) only in the directions `rates` (up, down) allows: the
+    /// directions whose unloaded runs showed it, so that test-weight runs
+    /// luffed at another speed than the unloaded ones cannot make the
+    /// difference between a loaded and an unloaded run a speed's.
+    pub fn fit_with_rates(&self, min_samples: u32, rates: (bool, bool)) -> Result<Learned<T>, CalibrationError> {
         for (up, n) in [(true, self.up.n), (false, self.down.n)] {
             if n < min_samples.max(1) {
                 return Err(CalibrationError::TooFewSamples { up, found: n });
@@ -762,8 +774,16 @@ impl<T: Real> CalibrationLearner<T> {
                 ((c_up + c_down) * T::lit(0.5), false)
             }
         };
-        let up = fit_with_rate(&self.up, one, offset, fit_direction(&self.up, one, offset));
-        let down = fit_with_rate(&self.down, -one, offset, fit_direction(&self.down, -one, offset));
+        let fit = |m: &Moments<T>, s: T, rate: bool| {
+            let base = fit_direction(m, s, offset);
+            if rate {
+                fit_with_rate(m, s, offset, base)
+            } else {
+                base
+            }
+        };
+        let up = fit(&self.up, one, rates.0);
+        let down = fit(&self.down, -one, rates.1);
         let cal = Calibration {
             friction_up_n: up.a_n,
             friction_down_n: down.a_n,

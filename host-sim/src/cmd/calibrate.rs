@@ -440,7 +440,9 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
         );
         all.merge(l);
     }
-    let learned = all.fit(min).map_err(too_few)?;
+    // c only where the unloaded runs show it: test weights are luffed
+    // slowly, and their runs' speed would stand for their load.
+    let learned = all.fit_with_rates(min, (base.up.rate_observable, base.down.rate_observable)).map_err(too_few)?;
     let cal = moment_limiter::load_estimate::Calibration {
         angle_sensor_lag_s: Some(lag.lag_s),
         ..learned.calibration
@@ -489,7 +491,7 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
         format!("{} unloaded run(s) and test weights {} kg", args.logs.len(), w.join(", "))
     };
     writeln!(out, "fit over {runs_text}: friction = a + b*|F| + c*|w| per direction (w the boom rate, rad/s)")?;
-    for (dir, f, mx) in [("up", learned.up, max.0), ("down", learned.down, max.1)] {
+    for (dir, f, unloaded_fit, mx) in [("up", learned.up, base.up, max.0), ("down", learned.down, base.down, max.1)] {
         let b_note = if f.slope_observable && f.raw_b < 0.0 {
             format!(
                 "b = 0: the fitted slope {:.5} +- {:.5} is negative (a friction falling with pressure is noise on a constant law), a refitted",
@@ -519,8 +521,8 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
             )
         } else {
             format!(
-                "c NOT observable or not above 0 (rate spread {:.3} of {:.3} rad/s): c = 0, the constant part holds the friction at these runs' speed; add runs at another speed (a 30 s luff besides the 10 s one)",
-                f.rate_sd, f.rate_mean
+                "c NOT observable or not above 0 (the unloaded runs' rate spread {:.3} of {:.3} rad/s): c = 0, the constant part holds the friction at these runs' speed; add unloaded runs at another speed (a 30 s luff besides the 10 s one)",
+                unloaded_fit.rate_sd, unloaded_fit.rate_mean
             )
         };
         writeln!(
