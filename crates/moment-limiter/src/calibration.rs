@@ -107,7 +107,7 @@ pub const MAX_SLOPE_SE: f64 = 0.003;
 /// Least spread of the boom rate over a direction's steady samples
 /// (standard deviation over mean) for the friction per unit rate c to be
 /// observable: runs at two speeds (a 10 s and a 30 s luff spread it by
-/// about 0.5).
+/// about 0.6); one 10 s run's steady samples by about 0.01.
 pub const MIN_RATE_SPREAD: f64 = 0.15;
 
 /// Largest standard error of the fitted c for it to be taken (N·s/rad):
@@ -344,8 +344,8 @@ pub struct DirectionFit<T> {
     pub force_sd_n: T,
     /// Friction per unit boom rate c (N·s/rad, 0 … [`MAX_PER_RATE_N_S`]).
     pub c: T,
-    /// `false`: the rate did not vary enough apart from the force for c
-    /// (it is 0).
+    /// `false`: c is 0, because the rate did not vary enough apart from
+    /// the force, c's error was too large, or it came out ≤ 0.
     pub rate_observable: bool,
     /// Standard error of c as fitted (N·s/rad).
     pub c_se: T,
