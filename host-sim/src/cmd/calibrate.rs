@@ -54,7 +54,8 @@ const REST_RESIDUAL_LIMIT_N: f64 = 10_000.0;
 /// Arguments of `crane-sim calibrate`.
 #[derive(clap::Args, Debug)]
 pub struct CalibrateArgs {
-    /// Unloaded logs (docs/log-format.md): at least one boom-up and one boom-down run.
+    /// Unloaded logs (docs/log-format.md): at least one boom-up and one boom-down run;
+    /// runs at two speeds (10 s and 30 s luffs) also learn a friction that grows with the speed.
     #[arg(required = true)]
     pub logs: Vec<PathBuf>,
     /// A run with a known test weight on the hook: `--known-load-kg W LOADED.csv`
