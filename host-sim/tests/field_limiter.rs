@@ -3406,6 +3406,23 @@ fn a_blunt_friction_onset_calibrated_at_two_speeds_holds_the_band() {
     });
 }
 
+/// A seal that breaks away at twice its sliding force ([`Seals::Stribeck`]),
+/// calibrated from runs at two speeds: its friction falls with the speed,
+/// which no part per unit rate c ≥ 0 fits, so the calibration learns c = 0
+/// (a law fitted over both speeds), and the bounds and the band hold as at
+/// one speed ([`a_stribeck_seal`]). Measured (f64): lowerings cut at true u
+/// 0.950–0.981, 85 % read at most 0.916, band p5/p50/p95 1.011/1.038/1.056
+/// in motion and 1.002/1.041/1.060 at rest.
+#[test]
+fn a_stribeck_seal_calibrated_at_two_speeds_learns_no_rate_part() {
+    with_setting(&TWO_SPEEDS, true, || {
+        let cal = calibration_f64(Seals::Stribeck);
+        assert_eq!((cal.friction_up_per_rate, cal.friction_down_per_rate), (0.0, 0.0), "{cal:?}");
+        let (m, r) = other_world(Precision::F64, &[Seals::Stribeck]);
+        assert_band("Stribeck, two speeds", m, r, false);
+    });
+}
+
 /// Runs `f` with the pendulum reading `offset_deg` off (see
 /// [`ANGLE_OFFSET_DEG`]).
 fn with_pendulum_off_by(offset_deg: f64, f: impl FnOnce()) {
@@ -4075,6 +4092,7 @@ fn a_campaign_in_the_second_formulation() {
 fn a_full_campaign_in_the_second_formulation() {
     campaign_in_the_second_formulation(10_000);
 }
+
 
 
 
