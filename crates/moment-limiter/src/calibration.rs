@@ -623,9 +623,8 @@ impl<T: Real> CalibrationLearner<T> {
         if let Some(c) = &self.check {
             let d = if up { Direction::Up } else { Direction::Down };
             // The law's prediction of r at the true force x and rate v.
-            let (a, b) = c.law(d).unwrap_or((T::lit(0.0), T::lit(0.0)));
             let s = if up { T::lit(1.0) } else { T::lit(-1.0) };
-            let e = (r - c.force_offset_n - s * (a + b * x + c.per_rate(d) * v)).abs();
+            let e = (r - c.force_offset_n - s * c.sliding_n(d, x, v)).abs();
             let slot = if up { &mut self.max_residual.0 } else { &mut self.max_residual.1 };
             *slot = slot.max(e);
         }
@@ -733,9 +732,8 @@ impl<T: Real> CalibrationLearner<T> {
         let one = T::lit(1.0);
         let mut sum = T::lit(0.0);
         for (m, s, d) in [(self.up, one, Direction::Up), (self.down, -one, Direction::Down)] {
-            let (a, b) = cal.law(d)?;
             sum += T::lit(f64::from(m.n))
-                * (m.mean_y - cal.force_offset_n - s * (a + b * m.mean_x + cal.per_rate(d) * m.mean_v));
+                * (m.mean_y - cal.force_offset_n - s * cal.sliding_n(d, m.mean_x, m.mean_v));
         }
         let n = self.up.n.saturating_add(self.down.n);
         (n > 0).then(|| sum / T::lit(f64::from(n)))

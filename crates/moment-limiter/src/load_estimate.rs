@@ -326,24 +326,25 @@ impl<T: Real> Calibration<T> {
                 .is_none_or(|l| l.is_finite() && l >= T::lit(0.0) && l <= T::lit(MAX_ANGLE_SENSOR_LAG_S))
     }
 
-    /// The friction law (a, b) of a direction of motion (N, –), or `None`
-    /// for `Still`.
-    pub fn law(&self, direction: Direction) -> Option<(T, T)> {
+    /// The friction law (a, b, c) of a direction of motion (N, –, N·s/rad),
+    /// or `None` for `Still`.
+    pub fn law(&self, direction: Direction) -> Option<(T, T, T)> {
         match direction {
-            Direction::Up => Some((self.friction_up_n, self.friction_up_per_force)),
-            Direction::Down => Some((self.friction_down_n, self.friction_down_per_force)),
+            Direction::Up => Some((self.friction_up_n, self.friction_up_per_force, self.friction_up_per_rate)),
+            Direction::Down => Some((self.friction_down_n, self.friction_down_per_force, self.friction_down_per_rate)),
             Direction::Still => None,
         }
     }
 
-    /// The friction per unit boom rate c of a direction of motion (N·s/rad;
-    /// 0 for `Still`).
-    pub fn per_rate(&self, direction: Direction) -> T {
-        match direction {
-            Direction::Up => self.friction_up_per_rate,
-            Direction::Down => self.friction_down_per_rate,
-            Direction::Still => T::lit(0.0),
-        }
+    /// The size of the sliding friction (N) at the true piston force
+    /// `force_n` and boom rate `rate_rad_s` moving in `direction`,
+    /// a + b·|F| + c·|ω| (0 for `Still`; a rate that is not a number adds
+    /// nothing): the law forward, as the calibration's residuals see it.
+    pub fn sliding_n(&self, direction: Direction, force_n: T, rate_rad_s: T) -> T {
+        let Some((a, b, c)) = self.law(direction) else {
+            return T::lit(0.0);
+        };
+        a + b * force_n.abs() + c * speed(rate_rad_s)
     }
 
     /// Signed friction (N) in a measured force `force_n` (offset removed)
@@ -351,11 +352,10 @@ impl<T: Real> Calibration<T> {
     /// solved for the true force (see the module doc),
     /// F = (F_meas − s·(a + c·|ω|))/(1 + s·b).
     pub fn friction_n(&self, direction: Direction, force_n: T, rate_rad_s: T) -> T {
-        let Some((a, b)) = self.law(direction) else {
+        let Some((a, b, c)) = self.law(direction) else {
             return T::lit(0.0);
         };
-        let speed = if rate_rad_s.is_finite() { rate_rad_s.abs() } else { T::lit(0.0) };
-        let a = a + self.per_rate(direction) * speed;
+        let a = a + c * speed(rate_rad_s);
         let one = T::lit(1.0);
         let (s, sa) = if direction == Direction::Up {
             (one, a)
@@ -393,6 +393,15 @@ impl<T: Real> Calibration<T> {
     }
 }
 
+/// |ω| of a boom rate (rad/s), 0 for one that is not a number.
+fn speed<T: Real>(rate_rad_s: T) -> T {
+    if rate_rad_s.is_finite() {
+        rate_rad_s.abs()
+    } else {
+        T::lit(0.0)
+    }
+}
+
 /// Why no load estimate could be made.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum EstimateError {
@@ -424,11 +433,13 @@ pub fn model_force_terms<T: Real, M: HookLoadModel<T>>(
 /// Hook load (kg) from the filtered measured force (see the module doc).
 /// The force must already have the transducer offsets removed; `terms` are
 /// the model's at the force's instant ([`crane_model::loads::load_model::CycleTerms::load`]),
-/// `accel_rad_s2` the boom's angular acceleration then, and `tan_swing`
-/// tan φ of the load swing (0: hanging straight).
+/// `accel_rad_s2` the boom's angular acceleration then, `rate_rad_s` its
+/// rate (for the friction's part per unit rate), and `tan_swing` tan φ of
+/// the load swing (0: hanging straight).
 pub fn estimate_load_kg<T: Real>(
     terms: &LoadTerms<T>,
     accel_rad_s2: T,
+    rate_rad_s: T,
     force_n: T,
     calibration: &Calibration<T>,
     friction: Friction,
@@ -441,7 +452,7 @@ pub fn estimate_load_kg<T: Real>(
         calibration,
         friction,
         T::lit(0.0),
-        T::lit(0.0),
+        rate_rad_s,
     )?;
     let f = f.scale_load_part(T::lit(1.0) + terms.tan_angle * tan_swing);
     f.solve(force).ok_or(EstimateError::NotObservable)
