@@ -1,5 +1,5 @@
 //! Maneuver files (`--maneuver FILE`, `docs/maneuvers.md`): a session of segments
-//! (hold, luff, lift-off) at a fixed slew, in TOML or JSON, read into a
+//! (hold, luff, lift-off, hoist) at a fixed slew, in TOML or JSON, read into a
 //! [`crane_model::sim::simulation::Program`].
 //!
 //! Every key is checked: unknown keys are refused, and a value out of range is
@@ -62,6 +62,21 @@ pub enum SegmentSpec {
         /// Hook load once lifted (kg).
         load_kg: f64,
     },
+    /// The winch hoists the hanging load (a held rope; negative `by_m`
+    /// lets it down), the boom still.
+    Hoist {
+        /// How far the load goes up (m; negative: down).
+        by_m: f64,
+        /// Duration (s).
+        duration_s: f64,
+        /// Acceleration and deceleration ramp (s); default a tenth of the
+        /// duration, at most 1 s.
+        #[serde(default)]
+        ramp_s: Option<f64>,
+        /// `linear` (default: a winch's constant acceleration) or `cycloidal`.
+        #[serde(default)]
+        profile: Option<String>,
+    },
 }
 
 /// The default ramp of a luff of `duration_s`: the thesis's 1.5 s for 30 s moves
@@ -120,6 +135,11 @@ impl ManeuverFile {
                     Segment::Luff { to_deg: *to_deg, shape, t1_s: ramp, t2_s: duration_s - ramp, t3_s: *duration_s }
                 }
                 SegmentSpec::LiftOff { duration_s, load_kg } => Segment::LiftOff { duration_s: *duration_s, load_kg: *load_kg },
+                SegmentSpec::Hoist { by_m, duration_s, ramp_s, profile } => {
+                    let ramp = ramp_s.unwrap_or_else(|| (duration_s / 10.0).min(1.0));
+                    let shape = shape(profile.as_deref().unwrap_or("linear")).with_context(|| format!("segment {}", i + 1))?;
+                    Segment::Hoist { by_m: *by_m, duration_s: *duration_s, ramp_s: ramp, shape }
+                }
             };
             p.push(seg).map_err(|e| anyhow::anyhow!("segment {} ({s:?}): {e}", i + 1))?;
         }

@@ -153,3 +153,40 @@ fn synth_samples_at_the_rate_asked_for() {
         assert!((span * rate - (rows.len() - 1) as f64).abs() < 1e-3, "{rate} Hz: {} rows over {span} s", rows.len());
     }
 }
+
+/// The `hoist` segment of a maneuver file: `examples/maneuvers/hoist-at-rest.toml`
+/// (6 t lifted at 50° on a 10 m held rope, hoisted 4 m up and down) runs with
+/// the boom still and the load's weight in the rope between the hoists, and
+/// its rope pulls the load's acceleration during the ramps (0.4 m/s over 0.5 s
+/// is 0.8 m/s²: the rope's tension 8 % over the weight at the start, whatever
+/// the bounce adds); a hoist on the paid-out thesis rope is refused, naming
+/// the segment.
+#[test]
+fn a_hoist_in_a_maneuver_file_runs_and_one_on_the_thesis_rope_is_refused() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/maneuvers");
+    let dir = tempfile::tempdir().expect("tmp");
+    let out_path = dir.path().join("hoist.csv");
+    let file = root.join("hoist-at-rest.toml");
+    let out = crane_sim(&["simulate", "--maneuver", file.to_str().expect("path"), "--out", out_path.to_str().expect("path")]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let rows = csv(&out_path);
+    // Columns: t, angle, piston force, 3 deflections, F_A, swing, violation, rope tension, hook load.
+    assert!(rows.iter().all(|r| (r[1] - 50.0).abs() < 1e-6), "the boom stays at 50°");
+    let weight = 6000.0 * 9.80665;
+    let mean = |from: f64, to: f64| {
+        let v: Vec<f64> = rows.iter().filter(|r| r[0] >= from && r[0] < to).map(|r| r[9]).collect();
+        v.iter().sum::<f64>() / v.len() as f64
+    };
+    // At rest between the hoists (5 s hold from 18.5 s): the weight (the rope's own within 1 %).
+    let rest = mean(19.0, 23.5);
+    assert!((rest / weight - 1.0).abs() < 0.01, "at rest {rest:.0} N for a weight of {weight:.0} N");
+    // The first hoist's start ramp, 8.0–8.5 s: 8 % more, the bounce averaging out only partly in half a second.
+    let ramp = mean(8.0, 8.5);
+    assert!(ramp / weight > 1.04, "start ramp {ramp:.0} N");
+    let thesis = dir.path().join("thesis.toml");
+    std::fs::write(&thesis, "start_deg = 50\nload_kg = 3000\n[[segment]]\nkind = \"hoist\"\nby_m = 2\nduration_s = 10\n").expect("write");
+    let out = crane_sim(&["simulate", "--maneuver", thesis.to_str().expect("path")]);
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("segment 1") && err.contains("held rope"), "{err}");
+}

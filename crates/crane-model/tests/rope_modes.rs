@@ -681,3 +681,82 @@ fn held_rope_thesis_maneuvers_oscillate_more_at_the_loaded_bounce_frequency() {
         }
     }
 }
+
+/// A hoist with the boom still: the winch takes 5 t hanging 10 m at 50°
+/// 4 m up in 10 s and lets it 4 m down again, each with linear ramps of 2 s
+/// (v = 4 / (10 − 2) = 0.5 m/s, a = v / 2 s = 0.25 m/s²). Newton's second law
+/// on the load: the rope pulls (W + rope)·(g + a) while the load speeds up
+/// upward or slows down from going down, (W + rope)·(g − a) the other two
+/// ramps, and its weight at constant speed. Checked over each window, mean
+/// of the rope tension against the tension at rest before the hoist scaled
+/// by (g ± a)/g, and the piston force against the model's static force of
+/// the load W·(g ± a)/g, a second way the cylinder must see the same pull.
+/// The ramps' steps of acceleration set the load bouncing on the boom: the
+/// windows skip their first half second, where the bounce is largest.
+#[test]
+fn a_hoist_loads_the_rope_by_the_loads_acceleration() {
+    let base = model();
+    let (deg, load, length) = (50.0, 5000.0, 10.0);
+    let rope = RopeChoice::Held { length_m: Some(length) };
+    let mut p = Program::new(deg, load, rope).expect("program");
+    p.push(Segment::Hold { duration_s: 1.0 }).expect("hold");
+    p.push(Segment::Hoist { by_m: 4.0, duration_s: 10.0, ramp_s: 2.0, shape: RampShape::Linear }).expect("hoist up");
+    p.push(Segment::Hold { duration_s: 4.0 }).expect("hold");
+    p.push(Segment::Hoist { by_m: -4.0, duration_s: 10.0, ramp_s: 2.0, shape: RampShape::Linear }).expect("hoist down");
+    p.push(Segment::Hold { duration_s: 4.0 }).expect("hold");
+    let mut rows = Vec::new();
+    base.simulate_program(&p, &SimulationOptions::for_type::<f64>(), |s| {
+        rows.push((s.t_s, s.rope_tension_n, s.reactions.piston_force_n, s.swing_rad));
+        true
+    })
+    .expect("simulation");
+    let mean = |from: f64, to: f64, k: usize| {
+        let v: Vec<f64> = rows.iter().filter(|r| r.0 >= from && r.0 < to).map(|r| [r.1, r.2][k]).collect();
+        v.iter().sum::<f64>() / v.len() as f64
+    };
+    let g = 9.80665;
+    let a = 0.25;
+    let held = base.with_rope(RopeMode::Held { length_m: length });
+    let static_force = |w: f64| held.reactions_at_rest(deg.to_radians(), w).expect("rest").piston_force_n;
+    let rest_tension = mean(0.0, 1.0, 0);
+    assert!((rest_tension / (load * g) - 1.0).abs() < 0.01, "tension at rest {rest_tension:.0} N");
+    // (window start, end, the load's upward acceleration)
+    let windows = [
+        (1.5, 3.0, a),
+        (4.0, 9.0, 0.0),
+        (9.5, 11.0, -a),
+        (12.0, 15.0, 0.0),
+        (15.5, 17.0, -a),
+        (18.0, 23.0, 0.0),
+        (23.5, 25.0, a),
+        (26.0, 29.0, 0.0),
+    ];
+    for (from, to, acc) in windows {
+        let tension = mean(from, to, 0);
+        let want_tension = rest_tension * (g + acc) / g;
+        let force = mean(from, to, 1);
+        let want_force = static_force(load * (g + acc) / g);
+        println!("{from:4.1}-{to:4.1} s, a = {acc:+.2} m/s²: rope {tension:.0} N (Newton {want_tension:.0} N), piston {force:.0} N (static {want_force:.0} N)");
+        assert!((tension / want_tension - 1.0).abs() < 0.005, "{from}-{to} s: rope tension {tension:.0} N, Newton's law {want_tension:.0} N");
+        assert!((force / want_force - 1.0).abs() < 0.005, "{from}-{to} s: piston force {force:.0} N, static {want_force:.0} N");
+    }
+    // A load hoisted straight up does not swing.
+    let swing = rows.iter().map(|r| r.3.abs()).fold(0.0, f64::max).to_degrees();
+    assert!(swing < 0.5, "swing {swing:.2}°");
+}
+
+/// A hoist is refused on the thesis's rope, and where it would leave less
+/// than a metre of rope or more than the tip's height hanging.
+#[test]
+fn a_hoist_needs_a_held_rope_and_a_length_that_fits() {
+    let hoist = |by_m: f64| Segment::Hoist { by_m, duration_s: 10.0, ramp_s: 1.0, shape: RampShape::Linear };
+    let mut thesis = Program::new(50.0, 3000.0, RopeChoice::Thesis).expect("program");
+    assert!(thesis.push(hoist(2.0)).is_err());
+    let base = model();
+    for (by_m, fits) in [(4.0, true), (9.5, false), (-3.0, true), (-30.0, false)] {
+        let mut p = Program::new(50.0, 3000.0, RopeChoice::Held { length_m: Some(10.0) }).expect("program");
+        p.push(hoist(by_m)).expect("segment");
+        let model = base.with_rope(RopeMode::Held { length_m: 10.0 });
+        assert_eq!(model.schedule(&p).is_ok(), fits, "hoist by {by_m} m from 10 m");
+    }
+}

@@ -184,6 +184,13 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         Ok(RigidMotion { pendulum, load_kg, ..*rigid })
     }
 
+    /// The same rigid motion with the held rope's hanging length, its rate and
+    /// acceleration set by a hoist (m, m/s, m/s²; the hook load unchanged).
+    pub fn with_length(&self, rigid: &RigidMotion<T>, length: ActuatorMotion<T>) -> Result<RigidMotion<T>, ModelError> {
+        let pendulum = Pendulum::new(self.rope_kg_per_m, rigid.load_kg, length.extension_m, length.rate_m_s, length.accel_m_s2)?;
+        Ok(RigidMotion { pendulum, ..*rigid })
+    }
+
     /// Stage 1b: every body's position and velocity given the free coordinates.
     pub fn configure(
         &self,

@@ -6,7 +6,7 @@ use crate::multibody::dynamics::Reactions;
 use crate::sim::integrator::{NewtonStart, State};
 use crate::multibody::{CraneModel, FreeCoordinates};
 use crate::data::profile::{ActuatorMotion, RampShape, StrokeProfile};
-use crate::multibody::rope::RopeChoice;
+use crate::multibody::rope::{RopeChoice, RopeMode};
 use crate::{ModelError, Real};
 
 /// Which way the boom moves (the crates' one direction type, see
@@ -243,13 +243,30 @@ pub enum Segment {
         /// Hook load once lifted (kg).
         load_kg: f64,
     },
+    /// The winch hoists the hanging load up by `by_m` (negative: lets it down)
+    /// with the boom still, a held rope only: the hanging length L runs from its
+    /// value to L − `by_m` on the speed profile of a luff (acceleration ramps of
+    /// `ramp_s` at both ends, `shape` as the luff's, eqs. 3.47/3.48), and the rope
+    /// is held at the new length from then on. The load's vertical acceleration
+    /// −L̈ loads the rope, W·(g − L̈) when hanging straight (the winch's own start
+    /// and stop, which no luff shows).
+    Hoist {
+        /// How far the load goes up (m; negative: down).
+        by_m: f64,
+        /// Duration of the hoist (s).
+        duration_s: f64,
+        /// Duration of each of its acceleration and deceleration ramps (s).
+        ramp_s: f64,
+        /// Ramp shape.
+        shape: RampShape,
+    },
 }
 
 impl Segment {
     /// Duration (s).
     pub fn duration_s(&self) -> f64 {
         match *self {
-            Segment::Hold { duration_s } | Segment::LiftOff { duration_s, .. } => duration_s,
+            Segment::Hold { duration_s } | Segment::LiftOff { duration_s, .. } | Segment::Hoist { duration_s, .. } => duration_s,
             Segment::Luff { t3_s, .. } => t3_s,
         }
     }
@@ -304,6 +321,17 @@ impl Program {
                     return Err(ModelError::InvalidParameter("hook load must be a finite number ≥ 0 kg"));
                 }
             }
+            Segment::Hoist { by_m, duration_s, ramp_s, .. } => {
+                if !matches!(self.rope, RopeChoice::Held { .. }) {
+                    return Err(ModelError::InvalidParameter("a hoist needs a held rope (the thesis's rope is paid out to keep the load's clearance)"));
+                }
+                if !(by_m.is_finite() && by_m.abs() >= 0.01 && by_m.abs() <= 100.0) {
+                    return Err(ModelError::InvalidParameter("a hoist moves the load by 0.01 to 100 m up or down"));
+                }
+                if !(duration_s <= 3600.0 && ramp_s > 0.0 && 2.0 * ramp_s <= duration_s) {
+                    return Err(ModelError::InvalidParameter("a hoist's ramps must be > 0 s and at most half its duration, which is at most 3600 s"));
+                }
+            }
         }
         let slot = self.segments.get_mut(self.len).ok_or(ModelError::InvalidParameter("too many segments"))?;
         *slot = segment;
@@ -347,15 +375,23 @@ struct Phase<T> {
     extension_m: T,
     load_from_kg: T,
     load_to_kg: T,
+    /// A held rope's hanging length in this phase (m; `None` for the
+    /// thesis's rope), and its profile while a hoist changes it.
+    length_m: Option<T>,
+    hoist: Option<StrokeProfile<T>>,
 }
 
-/// A [`Program`] compiled for one model: the actuator motion and hook load at any time.
+/// A [`Program`] compiled for one model: the actuator motion, hook load and
+/// hanging length at any time.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Schedule<T> {
     phases: [Phase<T>; MAX_SEGMENTS],
     len: usize,
     start_extension_m: T,
     initial_load_kg: T,
+    /// The program hoists: the hanging length is the schedule's, not the
+    /// rope mode's constant.
+    hoists: bool,
 }
 
 impl<T: Real> Schedule<T> {
@@ -383,6 +419,20 @@ impl<T: Real> Schedule<T> {
             }
             Some(p) => p.load_to_kg,
             None => self.initial_load_kg,
+        }
+    }
+
+    /// The held rope's hanging length at `t_s` with its rate and acceleration
+    /// (m, m/s, m/s²) once the program has hoisted; `None` when the rope
+    /// mode's own length holds (no hoist in the program, or the thesis's rope).
+    pub fn hanging_length_at(&self, t_s: T) -> Option<ActuatorMotion<T>> {
+        if !self.hoists {
+            return None;
+        }
+        let p = self.phase_at(t_s)?;
+        match p.hoist {
+            Some(profile) => Some(profile.at(t_s - p.start_s)),
+            None => p.length_m.map(|l| ActuatorMotion { extension_m: l, rate_m_s: T::zero(), accel_m_s2: T::zero() }),
         }
     }
 }
@@ -501,17 +551,38 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
         let ext = |deg: f64| self.geometry.extension_at_angle(T::lit(deg.to_radians()));
         let start_extension_m = ext(program.start_deg);
         let initial = T::lit(program.initial_load_kg);
+        let mut length = match self.rope {
+            RopeMode::Held { length_m } => Some(length_m),
+            RopeMode::Thesis => None,
+        };
         let mut sched = Schedule {
-            phases: [Phase { start_s: T::zero(), end_s: T::zero(), stroke: None, extension_m: start_extension_m, load_from_kg: initial, load_to_kg: initial }; MAX_SEGMENTS],
+            phases: [Phase { start_s: T::zero(), end_s: T::zero(), stroke: None, extension_m: start_extension_m, load_from_kg: initial, load_to_kg: initial, length_m: length, hoist: None }; MAX_SEGMENTS],
             len: 0,
             start_extension_m,
             initial_load_kg: initial,
+            hoists: false,
         };
         let (mut t, mut extension, mut load) = (0.0f64, start_extension_m, initial);
         for (seg, phase) in program.segments().iter().zip(sched.phases.iter_mut()) {
             let d = seg.duration_s();
-            let mut p = Phase { start_s: T::lit(t), end_s: T::lit(t + d), stroke: None, extension_m: extension, load_from_kg: load, load_to_kg: load };
+            let mut p = Phase { start_s: T::lit(t), end_s: T::lit(t + d), stroke: None, extension_m: extension, load_from_kg: load, load_to_kg: load, length_m: length, hoist: None };
             match *seg {
+                Segment::Hoist { by_m, duration_s, ramp_s, shape } => {
+                    let from = length.ok_or(ModelError::InvalidParameter("a hoist needs a held rope"))?;
+                    let to = from - T::lit(by_m);
+                    // The load stays on the rope and above the ground: at
+                    // least a metre of rope, and no more than the rigid tip's
+                    // height at this angle.
+                    let angle = self.geometry.motion(ActuatorMotion { extension_m: extension, rate_m_s: T::zero(), accel_m_s2: T::zero() })?.boom.angle;
+                    let tip_height = self.clearance_length_m(angle)? + self.load_clearance_m;
+                    if !(to >= T::one() && to <= tip_height) {
+                        return Err(ModelError::InvalidParameter("a hoist must leave between 1 m of rope and the tip's height hanging"));
+                    }
+                    p.hoist = Some(StrokeProfile { shape, t1_s: T::lit(ramp_s), t2_s: T::lit(duration_s - ramp_s), t3_s: T::lit(duration_s), start_m: from, end_m: to });
+                    length = Some(to);
+                    p.length_m = length;
+                    sched.hoists = true;
+                }
                 Segment::Hold { .. } => {}
                 Segment::Luff { to_deg, shape, t1_s, t2_s, t3_s } => {
                     let stroke = StrokeProfile { shape, t1_s: T::lit(t1_s), t2_s: T::lit(t2_s), t3_s: T::lit(t3_s), start_m: extension, end_m: ext(to_deg) };
@@ -571,6 +642,10 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
             let act = sched.actuator_at(t);
             let load = sched.load_at(t);
             let rigid = model.rigid_motion(act, load)?;
+            let rigid = match sched.hanging_length_at(t) {
+                Some(l) => model.with_length(&rigid, l)?,
+                None => rigid,
+            };
             let sampled = i % options.output_every == 0 || i == steps;
             if !sampled {
                 let stats = state.step_to(&model, h, &rigid, tol)?;
