@@ -4096,3 +4096,172 @@ fn a_full_campaign_in_the_second_formulation() {
 
 
 
+
+/// The winch's hoists with the boom still (`Segment::Hoist`, a world no luff
+/// shows): at 20°, 50° and 80° on held ropes of 3 m, half-way and all the way
+/// to the tip, the load lifted off in 2 s, then hoisted by 40 % of its
+/// hanging length (the 3 m rope: let down 3 m first) and back, at each
+/// (hook speed m/s, linear ramp s) of `hoists`. Returns the OVERLOADs at 85 %
+/// and at 90 % of rated, the highest estimated u at 85 %, and the
+/// estimate/true of 30 % and 80 % loads in the hoists' constant-speed parts
+/// from 1 s after their ramps, and at rest from 1 s after their stops (as the
+/// luffs' band).
+fn hoists_at_rest(precision: Precision, hoists: &[(f64, f64)]) -> Hoists {
+    let mut h = Hoists { cut85: Vec::new(), peak85: 0.0, motion: Vec::new(), rest: Vec::new(), cut90: Vec::new() };
+    for angle in [20.0f64, 50.0, 80.0] {
+        let rated = rated_kg(angle.to_radians());
+        for rope in [Rope::Held(0.0), Rope::Held(0.5), Rope::Held(1.0)] {
+            let choice = rope_choice(rope, angle);
+            let RopeChoice::Held { length_m: Some(length) } = choice else { unreachable!("a held rope") };
+            let first = if length < 5.0 { -3.0 } else { 0.4 * length };
+            for &(speed, ramp) in hoists {
+                let duration = first.abs() / speed + ramp;
+                for frac in [0.3, 0.8, 0.85, 0.9] {
+                    let mut p = Program::new(angle, 0.0, choice).unwrap();
+                    p.push(Segment::Hold { duration_s: HOLD_BEFORE_S }).unwrap();
+                    p.push(Segment::LiftOff { duration_s: 2.0, load_kg: frac * rated }).unwrap();
+                    p.push(Segment::Hold { duration_s: 4.0 }).unwrap();
+                    let mut starts = Vec::new();
+                    let mut t = HOLD_BEFORE_S + 6.0;
+                    for by_m in [first, -first] {
+                        p.push(Segment::Hoist { by_m, duration_s: duration, ramp_s: ramp, shape: RampShape::Linear }).unwrap();
+                        p.push(Segment::Hold { duration_s: 5.0 }).unwrap();
+                        starts.push(t);
+                        t += duration + 5.0;
+                    }
+                    let pts = replay_rows(&program_rows(&p, Seals::Constant, 4), Seals::Constant, precision);
+                    let name = format!("{angle}° {rope:?} ({length:.1} m) {frac} of rated, hoisted {first:+.1} m and back at {speed} m/s, ramps {ramp} s");
+                    if frac > 0.84 {
+                        let high = pts.iter().filter(|q| q.u > 0.0).map(|q| q.ratio * q.u).fold(0.0, f64::max);
+                        println!("{precision:?} {name}: highest estimated u {high:.3}");
+                        let overload = first_overload(&pts).map(|(t, u)| format!("{name}: OVERLOAD at {t:.2} s, true u {u:.3}"));
+                        if frac < 0.86 {
+                            h.peak85 = h.peak85.max(high);
+                            h.cut85.extend(overload);
+                        } else {
+                            h.cut90.extend(overload);
+                        }
+                        continue;
+                    }
+                    let (mut m, mut r) = (Vec::new(), Vec::new());
+                    for &start in &starts {
+                        let end = start + duration;
+                        m.extend(pts.iter().filter(|q| q.t >= start + ramp + 1.0 && q.t <= end - ramp).map(|q| q.ratio));
+                        r.extend(pts.iter().filter(|q| q.t >= end + 1.0 && q.t < end + 5.0).map(|q| q.ratio));
+                    }
+                    let span = |v: &[f64]| (percentile(&mut v.to_vec(), 0.05), percentile(&mut v.to_vec(), 0.95));
+                    let ((m5, m95), (r5, r95)) = (span(&m), span(&r));
+                    println!("{precision:?} {name}: hoisting {m5:.3}…{m95:.3}, at rest {r5:.3}…{r95:.3}");
+                    h.motion.extend(m);
+                    h.rest.extend(r);
+                }
+            }
+        }
+    }
+    let band = |v: &mut Vec<f64>| [0.05, 0.5, 0.95].map(|q| percentile(v, q));
+    println!(
+        "{precision:?} hoists {hoists:?}: 85 % read at most u {:.3}, cut in {}; 90 % cut in {} of {}; band hoisting {:.3?}, at rest after {:.3?}",
+        h.peak85,
+        h.cut85.len(),
+        h.cut90.len(),
+        9 * hoists.len(),
+        band(&mut h.motion.clone()),
+        band(&mut h.rest.clone())
+    );
+    h
+}
+
+/// What [`hoists_at_rest`] measures.
+struct Hoists {
+    /// The OVERLOADs at 85 % of rated.
+    cut85: Vec<String>,
+    /// The highest estimated u at 85 %.
+    peak85: f64,
+    /// Estimate/true of 30 % and 80 % while hoisting and at rest after.
+    motion: Vec<f64>,
+    rest: Vec<f64>,
+    /// The OVERLOADs at 90 % of rated.
+    cut90: Vec<String>,
+}
+
+impl Hoists {
+    /// The band's (p5, p50, p95) while hoisting and at rest after.
+    fn bands(&self) -> ([f64; 3], [f64; 3]) {
+        let band = |v: &[f64]| [0.05, 0.5, 0.95].map(|q| percentile(&mut v.to_vec(), q));
+        (band(&self.motion), band(&self.rest))
+    }
+}
+
+/// Hoists with ramps of 1 s (0.2–0.5 m/s², a winch started and stopped
+/// smoothly): at 0.2 m/s and 0.5 m/s.
+const SMOOTH_HOISTS: [(f64, f64); 2] = [(0.2, 1.0), (0.5, 1.0)];
+
+/// A hard start and stop: 0.5 m/s in 0.25 s (2 m/s², the rope pulling a
+/// fifth more for a quarter of a second, and the load ringing on the boom
+/// after it).
+const HARD_HOISTS: [(f64, f64); 1] = [(0.5, 0.25)];
+
+/// Hoisting is no load ([`hoists_at_rest`]): started and stopped smoothly,
+/// no OVERLOAD at 85 % or 90 % of rated and the estimate within 1.00–1.10
+/// of the true load (p5–p95) while hoisting at constant speed and 1 s after a
+/// hoist stops; measured: 85 % reads at most u 0.935, the band
+/// 1.032/1.045/1.067 hoisting and 1.032/1.047/1.087 at rest after (f32
+/// 1.035/1.046/1.069 and 1.035/1.048/1.088). A
+/// hard start and stop ([`HARD_HOISTS`]) keeps the requirement at 85 %
+/// (read at most u 0.985), but not the band or 90 %: see
+/// [`hard_hoist_starts_and_stops_known_gap`].
+fn hoisting_is_no_load(precision: Precision) {
+    let smooth = hoists_at_rest(precision, &SMOOTH_HOISTS);
+    let (m, r) = smooth.bands();
+    assert!(smooth.cut85.is_empty() && smooth.cut90.is_empty(), "{:#?} {:#?}", smooth.cut85, smooth.cut90);
+    assert!(in_band(m) && in_band(r), "hoisting {m:?}, at rest after {r:?}");
+    let hard = hoists_at_rest(precision, &HARD_HOISTS);
+    assert!(hard.cut85.is_empty(), "{:#?}", hard.cut85);
+}
+
+#[test]
+fn hoisting_is_no_load_f64() {
+    hoisting_is_no_load(Precision::F64);
+}
+
+#[test]
+fn hoisting_is_no_load_f32() {
+    hoisting_is_no_load(Precision::F32);
+}
+
+/// KNOWN GAP, measured (f64; f32 alike): a winch started and stopped hard
+/// ([`HARD_HOISTS`], 0.5 m/s in 0.25 s) reads as load. The rope pulls
+/// W·(g + 2 m/s²) for a quarter of a second, the load rings on the boom at
+/// 1–2 Hz after it, and W_fast passes the crest (one 0.7 Hz stage, against
+/// the load's bounce) at up to 1.08 × the load; at rest the bank's averages
+/// are raised to W_fast at once (what keeps a lift-off in them), so they
+/// take that crest and hold it for seconds. 90 % of rated is cut at true u
+/// 0.900 in 6 of 9 cases (20° and 50°; not 80°), the band is
+/// 1.029/1.053/1.112 hoisting and 1.031/1.065/1.118 at rest 1–5 s after a
+/// stop (single cases up to 1.135), and 85 % reads up to u 0.985 (f32
+/// alike). Tried and not kept: raising the averages at rest to W_fast's
+/// lower envelope over the last 0.5–1 s (the band at rest after the smooth
+/// and hard hoists together, p95 1.104, became 1.075) or its midrange
+/// (1.089) instead; both took away the
+/// upward bias the crests give every rest, and the band 1–3 s after a stop
+/// fell under p5 1.00 in the worlds calibrated at two speeds (0.998–1.000
+/// from 1.002–1.006).
+#[test]
+#[ignore = "KNOWN GAP: a winch started and stopped hard (0.5 m/s in 0.25 s) reads as load: 90 % cut in 6 of 9 cases, band p95 1.112 hoisting, 1.118 at rest after"]
+fn hard_hoist_starts_and_stops_known_gap() {
+    let hard = hoists_at_rest(Precision::F64, &HARD_HOISTS);
+    let (m, r) = hard.bands();
+    assert!(hard.cut90.is_empty() && in_band(m) && in_band(r), "90 % cut: {:#?}; hoisting {m:?}, at rest after {r:?}", hard.cut90);
+}
+
+/// The known gap above pinned at its measured size: 90 % cut in no more than
+/// 6 of the 9 hard hoists, 85 % read at most u 0.99 (0.985 measured), and
+/// the band's p95 at most 1.12 (measured 1.112 hoisting, 1.118 at rest
+/// after), its p5 at least 1.00.
+#[test]
+fn hard_hoist_starts_and_stops_stay_as_measured() {
+    let hard = hoists_at_rest(Precision::F64, &HARD_HOISTS);
+    let (m, r) = hard.bands();
+    assert!(hard.cut90.len() <= 6 && hard.peak85 <= 0.99, "90 % cut in {}; 85 % read u {:.3}", hard.cut90.len(), hard.peak85);
+    assert!(m[0] >= 1.0 && r[0] >= 1.0 && m[2] <= 1.12 && r[2] <= 1.12, "hoisting {m:?}, at rest after {r:?}");
+}
