@@ -436,22 +436,40 @@ mod limiter_adapter {
         Frame { t, p1_bar: r.p1_bar as f32, p2_bar: r.p2_bar as f32, boom_angle_deg: r.boom_angle_deg as f32 }
     }
 
-    /// The learner of `logs` run through the limiter with the angle sensor taken as `sensor`.
-    fn learn(logs: &[&[SynthRow]], sensor: SensorCandidate<f32>, steady: SteadyMotion<f32>) -> anyhow::Result<CalibrationLearner<f32>> {
+    /// What the limiter left out of the calibration runs: the samples with
+    /// a fault, of all, and the first fault.
+    #[derive(Debug, Default)]
+    struct LeftOut {
+        faulted: usize,
+        samples: usize,
+        first: Option<String>,
+    }
+
+    /// The learner of `logs` run through the limiter with the angle sensor
+    /// taken as `sensor`, and the samples it left out.
+    fn learn(logs: &[&[SynthRow]], sensor: SensorCandidate<f32>, steady: SteadyMotion<f32>) -> anyhow::Result<(CalibrationLearner<f32>, LeftOut)> {
         let mut learner = CalibrationLearner::<f32>::with_steady_motion(steady);
+        let mut left = LeftOut::default();
         for rows in logs {
             let config = LimiterConfig { angle_sensor_lag_s: sensor.alignment_lag_s(), ..LimiterConfig::standard() };
             let mut lim = Limiter::new(thesis_load_model_f32(), config).map_err(|e| anyhow::anyhow!("{e}"))?;
             let mut pressure_lag = sensor.pressure_lag();
             for r in rows.iter() {
                 let rep = lim.step_frame(&pressure_lag.apply(frame(r)));
-                if let (None, Some(m)) = (rep.fault, rep.measurement) {
-                    learner.observe(lim.model(), &m).map_err(|e| anyhow::anyhow!("calibration: {e}"))?;
+                left.samples += 1;
+                match (rep.fault, rep.measurement) {
+                    (None, Some(m)) => learner.observe(lim.model(), &m).map_err(|e| anyhow::anyhow!("calibration: {e}"))?,
+                    (fault, _) => {
+                        left.faulted += 1;
+                        if left.first.is_none() {
+                            left.first = Some(fault.map_or_else(|| "no measurement".to_string(), |f| format!("{f} at {:.2} s", r.t_s)));
+                        }
+                    }
                 }
             }
             learner.end_of_log();
         }
-        Ok(learner)
+        Ok((learner, left))
     }
 
     /// The calibration learned from unloaded up and down logs (as `crane-sim
@@ -459,12 +477,14 @@ mod limiter_adapter {
     /// it), and whether the lag was observable.
     pub fn calibrate(logs: &[&[SynthRow]]) -> anyhow::Result<(CraneCalibration, bool)> {
         let lag = fit_sensor(LimiterConfig::<f32>::standard().angle_sensor_lag_s, |sensor| {
-            Ok::<_, anyhow::Error>(learn(logs, sensor, SteadyMotion::lag_search())?.line_ssr())
+            Ok::<_, anyhow::Error>(learn(logs, sensor, SteadyMotion::lag_search())?.0.line_ssr())
         })?
         .lag;
-        let cal = learn(logs, SensorCandidate::first_order(lag.lag_s), SteadyMotion::standard())?
-            .finish(50)
-            .map_err(|e| anyhow::anyhow!("calibration: {e:?}"))?;
+        let (learner, left) = learn(logs, SensorCandidate::first_order(lag.lag_s), SteadyMotion::standard())?;
+        let cal = learner.finish(50).map_err(|e| {
+            let first = left.first.map_or_else(String::new, |f| format!(", the first: {f}"));
+            anyhow::anyhow!("calibration refused: {e}; the limiter faulted on {} of the {} samples of its unloaded runs{first}", left.faulted, left.samples)
+        })?;
         Ok((Calibration { angle_sensor_lag_s: Some(lag.lag_s), ..cal }, lag.observable))
     }
 
@@ -871,6 +891,11 @@ struct Summary {
     /// The cranes' sensors and seals drawn from the wider worlds (`--wide`).
     wide: bool,
     failed_simulations: usize,
+    /// Scenarios of cranes the calibration refused: not run.
+    scenarios_not_run: usize,
+    /// The cranes the calibration refused, why, and how many scenarios
+    /// they had.
+    uncalibrated_cranes: Vec<Uncalibrated>,
     #[serde(flatten)]
     all: TallySummary,
     /// The same grades by rope mode and friction law.
@@ -879,6 +904,19 @@ struct Summary {
     calibrations: Vec<CraneLaw>,
     /// Per friction law: how far the learned laws are from the synthesized ones.
     calibration_by_friction: Vec<LawErrors>,
+}
+
+/// One scenario's outcome: graded (with its `synth` line), or not run
+/// because the calibration refused its crane (the crane's index).
+type Outcome = std::result::Result<(Scenario, Grade, String), usize>;
+
+/// A crane the calibration refused (see `run_campaign`).
+#[derive(Debug, Serialize)]
+struct Uncalibrated {
+    crane: usize,
+    error: String,
+    /// Its scenarios, not run.
+    scenarios: usize,
 }
 
 /// The piston force at which the learned and synthesized friction laws are
@@ -1016,7 +1054,7 @@ fn calibrate_crane(model: &ThesisModel<f64>, crane: &Crane, options: &Simulation
         logs.push(synth_core::synthesize(&samples, dt, 1.0, 0.0, &sensors));
     }
     let refs: Vec<&[SynthRow]> = logs.iter().map(Vec::as_slice).collect();
-    limiter_adapter::calibrate(&refs).with_context(|| format!("crane {}", crane.index))
+    limiter_adapter::calibrate(&refs)
 }
 
 /// Runs the campaign and returns the summary and the per-scenario records (JSON
@@ -1053,7 +1091,16 @@ fn run_campaign(args: &CampaignArgs, progress: bool, world: Option<World>) -> Re
         args.only.clone()
     };
     let cranes: Vec<Crane> = (0..args.cranes.min(args.scenarios)).map(|i| Crane::new(args.seed, i, args.wide)).collect();
-    let calibrations: Vec<(CraneCalibration, bool)> = cranes.par_iter().map(|c| calibrate_crane(&model, c, &options, dt, world)).collect::<Result<_>>()?;
+    // A crane the calibration refuses is not put into service (`crane-sim
+    // calibrate` exits 1 on it): its scenarios are not run, and the summary
+    // names it. The other cranes' scenarios are graded as always.
+    let calibrations: Vec<std::result::Result<(CraneCalibration, bool), String>> =
+        cranes.par_iter().map(|c| calibrate_crane(&model, c, &options, dt, world).map_err(|e| format!("{e:#}"))).collect();
+    for (c, cal) in cranes.iter().zip(&calibrations) {
+        if let Err(e) = cal {
+            eprintln!("warning: crane {}: {e}: its scenarios are not run", c.index);
+        }
+    }
     let bar = if progress { indicatif::ProgressBar::new(indices.len() as u64) } else { indicatif::ProgressBar::hidden() };
     bar.set_style(
         indicatif::ProgressStyle::with_template("{elapsed_precise} [{bar:40}] {pos}/{len} scenarios ({per_sec}, eta {eta})")
@@ -1062,11 +1109,15 @@ fn run_campaign(args: &CampaignArgs, progress: bool, world: Option<World>) -> Re
     );
     // CPU time per phase (simulation, synthesis, limiter, grading), summed over threads.
     let phase_ns: [std::sync::atomic::AtomicU64; 4] = Default::default();
-    let results: Vec<Result<(Scenario, Grade, String)>> = indices
+    let results: Vec<Result<Outcome>> = indices
         .par_iter()
         .map_init(Vec::new, |out, &i| {
             let sc = Scenario::draw(args.seed, i, cranes.len(), &rated, &model)?;
             let crane = &cranes[sc.crane];
+            let Ok(calibration) = &calibrations[sc.crane] else {
+                bar.inc(1);
+                return Ok(Err(sc.crane));
+            };
             let program = sc.program()?;
             let t0 = std::time::Instant::now();
             let mut samples = synth_core::simulate_program(&model, &program, &options).map_err(|e| anyhow::anyhow!("scenario {i}: simulation: {e}"))?;
@@ -1077,7 +1128,7 @@ fn run_campaign(args: &CampaignArgs, progress: bool, world: Option<World>) -> Re
             let sensors = SensorModel { seed: sc.noise_seed, ..crane.sensors };
             let rows = synth_core::synthesize(&samples, dt, 0.0, sc.load_kg, &sensors);
             let t2 = std::time::Instant::now();
-            let fault = limiter_adapter::replay(&calibrations[sc.crane].0, &rows, out)?;
+            let fault = limiter_adapter::replay(&calibration.0, &rows, out)?;
             let t3 = std::time::Instant::now();
             let mut g = grade(&sc, &rows, out, &rated);
             g.first_fault = fault;
@@ -1087,7 +1138,7 @@ fn run_campaign(args: &CampaignArgs, progress: bool, world: Option<World>) -> Re
             }
             bar.inc(1);
             let synth = sc.synth_command(crane);
-            Ok((sc, g, synth))
+            Ok(Ok((sc, g, synth)))
         })
         .collect();
     bar.finish_and_clear();
@@ -1098,9 +1149,16 @@ fn run_campaign(args: &CampaignArgs, progress: bool, world: Option<World>) -> Re
     const GROUPS: [(&str, &str); 4] = [("thesis", "constant"), ("thesis", "seal"), ("held", "constant"), ("held", "seal")];
     let mut groups: [Tally; 4] = Default::default();
     let mut failed_simulations = 0;
+    let mut not_run = vec![0usize; cranes.len()];
     for r in results {
         let (sc, g, synth) = match r {
-            Ok(v) => v,
+            Ok(Ok(v)) => v,
+            Ok(Err(crane)) => {
+                if let Some(n) = not_run.get_mut(crane) {
+                    *n += 1;
+                }
+                continue;
+            }
             Err(e) => {
                 eprintln!("warning: {e:#}");
                 failed_simulations += 1;
@@ -1123,9 +1181,16 @@ fn run_campaign(args: &CampaignArgs, progress: bool, world: Option<World>) -> Re
         cranes: cranes.len(),
         wide: args.wide,
         failed_simulations,
+        scenarios_not_run: not_run.iter().sum(),
+        uncalibrated_cranes: cranes
+            .iter()
+            .zip(&calibrations)
+            .zip(&not_run)
+            .filter_map(|((c, cal), &scenarios)| cal.as_ref().err().map(|error| Uncalibrated { crane: c.index, error: error.clone(), scenarios }))
+            .collect(),
         all: all.summary(),
         groups: GROUPS.iter().zip(groups).map(|(&(rope, friction), t)| GroupSummary { rope, friction, grades: t.summary() }).collect(),
-        calibrations: cranes.iter().zip(&calibrations).map(|(c, cal)| CraneLaw::new(c, cal)).collect(),
+        calibrations: cranes.iter().zip(&calibrations).filter_map(|(c, cal)| cal.as_ref().ok().map(|cal| CraneLaw::new(c, cal))).collect(),
         calibration_by_friction: Vec::new(),
     };
     let s = Summary { calibration_by_friction: law_errors(&s.calibrations), ..s };
@@ -1134,7 +1199,8 @@ fn run_campaign(args: &CampaignArgs, progress: bool, world: Option<World>) -> Re
 
 /// The grades as text.
 fn write_tally(out: &mut impl Write, t: &TallySummary) -> std::io::Result<()> {
-    let p = |v: [f64; 3]| format!("{:.3} / {:.3} / {:.3}", v[0], v[1], v[2]);
+    // No value (no scenario of the kind, e.g. no lift-off) reads "none", not NaN.
+    let p = |v: [f64; 3]| if v.iter().any(|x| x.is_nan()) { "none".to_string() } else { format!("{:.3} / {:.3} / {:.3}", v[0], v[1], v[2]) };
     writeln!(out, "overloads         {} scenarios reach true u ≥ 1.0", t.overload_scenarios)?;
     writeln!(out, "missed            {} ({} lift-offs not cut within 1 s of the load leaving the ground; the others: true u reached 1.05 with no OVERLOAD)", t.missed_overloads, t.missed_in_lift_off)?;
     writeln!(out, "lift-offs         {} reached true u ≥ 1.05 while hoisting; {} of them before the limiter cut (the 1.05 rule; not in missed)", t.lift_off_overloads, t.lift_off_past_1_05_uncut)?;
@@ -1145,8 +1211,9 @@ fn write_tally(out: &mut impl Write, t: &TallySummary) -> std::io::Result<()> {
     writeln!(out, "faults            {}", t.faults)?;
     writeln!(out, "band in motion    {} (estimate/true, p5 / p50 / p95)", p(t.band_motion_p5_p50_p95))?;
     writeln!(out, "band at rest      {}", p(t.band_rest_p5_p50_p95))?;
-    writeln!(out, "detection delay   {} s (p5 / p50 / p95), max {:.3} s", p(t.detection_delay_s_p5_p50_p95), t.detection_delay_s_max)?;
-    writeln!(out, "lift-off delay    {} s after leaving the ground (p5 / p50 / p95), max {:.3} s", p(t.lift_off_delay_s_p5_p50_p95), t.lift_off_delay_s_max)?;
+    let delays = |v: [f64; 3], max: f64| if max.is_nan() { "none".to_string() } else { format!("{} s (p5 / p50 / p95), max {max:.3} s", p(v)) };
+    writeln!(out, "detection delay   {}", delays(t.detection_delay_s_p5_p50_p95, t.detection_delay_s_max))?;
+    writeln!(out, "lift-off delay    {} (after leaving the ground)", delays(t.lift_off_delay_s_p5_p50_p95, t.lift_off_delay_s_max))?;
     let w = &t.worst;
     let kinds = [
         ("missed", "true u at the first cut", w.missed),
@@ -1191,6 +1258,9 @@ pub fn run(args: CampaignArgs) -> Result<u8> {
     } else {
         let _ = writeln!(out, "campaign          seed {}, shard {}, {} scenarios on {} cranes{}", summary.seed, summary.shard, summary.all.scenarios, summary.cranes, if summary.wide { " (wider worlds)" } else { "" });
         let _ = writeln!(out, "failed runs       {}", summary.failed_simulations);
+        for u in &summary.uncalibrated_cranes {
+            let _ = writeln!(out, "not calibrated    crane {}: {} ({} scenarios not run)", u.crane, u.error, u.scenarios);
+        }
         let _ = write_tally(&mut out, &summary.all);
         for g in &summary.groups {
             let _ = writeln!(out, "\nrope {}, friction {}: {} scenarios", g.rope, g.friction, g.grades.scenarios);
