@@ -4158,15 +4158,13 @@ fn hoists_at_rest(precision: Precision, hoists: &[(f64, f64)]) -> Hoists {
             }
         }
     }
-    let band = |v: &mut Vec<f64>| [0.05, 0.5, 0.95].map(|q| percentile(v, q));
+    let (m, r) = h.bands();
     println!(
-        "{precision:?} hoists {hoists:?}: 85 % read at most u {:.3}, cut in {}; 90 % cut in {} of {}; band hoisting {:.3?}, at rest after {:.3?}",
+        "{precision:?} hoists {hoists:?}: 85 % read at most u {:.3}, cut in {}; 90 % cut in {} of {}; band hoisting {m:.3?}, at rest after {r:.3?}",
         h.peak85,
         h.cut85.len(),
         h.cut90.len(),
         9 * hoists.len(),
-        band(&mut h.motion.clone()),
-        band(&mut h.rest.clone())
     );
     h
 }

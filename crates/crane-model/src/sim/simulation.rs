@@ -562,7 +562,7 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
             initial_load_kg: initial,
             hoists: false,
         };
-        let (mut t, mut extension, mut load) = (0.0f64, start_extension_m, initial);
+        let (mut t, mut extension, mut load, mut deg) = (0.0f64, start_extension_m, initial, program.start_deg);
         for (seg, phase) in program.segments().iter().zip(sched.phases.iter_mut()) {
             let d = seg.duration_s();
             let mut p = Phase { start_s: T::lit(t), end_s: T::lit(t + d), stroke: None, extension_m: extension, load_from_kg: load, load_to_kg: load, length_m: length, hoist: None };
@@ -573,8 +573,7 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
                     // The load stays on the rope and above the ground: at
                     // least a metre of rope, and no more than the rigid tip's
                     // height at this angle.
-                    let angle = self.geometry.motion(ActuatorMotion { extension_m: extension, rate_m_s: T::zero(), accel_m_s2: T::zero() })?.boom.angle;
-                    let tip_height = self.clearance_length_m(angle)? + self.load_clearance_m;
+                    let tip_height = self.clearance_length_m(T::lit(deg.to_radians()))? + self.load_clearance_m;
                     if !(to >= T::one() && to <= tip_height) {
                         return Err(ModelError::InvalidParameter("a hoist must leave between 1 m of rope and the tip's height hanging"));
                     }
@@ -587,6 +586,7 @@ impl<T: Real, const M: usize> CraneModel<T, M> {
                 Segment::Luff { to_deg, shape, t1_s, t2_s, t3_s } => {
                     let stroke = StrokeProfile { shape, t1_s: T::lit(t1_s), t2_s: T::lit(t2_s), t3_s: T::lit(t3_s), start_m: extension, end_m: ext(to_deg) };
                     extension = stroke.at(stroke.t3_s).extension_m;
+                    deg = to_deg;
                     p.stroke = Some(stroke);
                 }
                 Segment::LiftOff { load_kg, .. } => {
