@@ -21,7 +21,7 @@
 //! | valid values | [`units`] | [`units::PressureBar`], [`units::BoomAngle`]: cannot hold a faulted reading |
 //! | checks | [`checks`] | NAMUR NE 43, range, stuck, rate of change |
 //! | force | [`piston_force`], [`filter`] | eq. 4.1 and the oscillation filter |
-//! | load | [`load_estimate`], [`static_load`], [`held_pendulum`], [`swing`], [`load_jump`], [`period_mean`], [`swing_midrange`] | W from the model's piston force (quadratic in W), friction per direction, boom inertia; the static hook mass from a bank of rope hypotheses (paid out, or held at 3–22 m, each with its swing): the lowest load any rope explains, floored by their averages; a load added at rest after a move, from the consistent ropes' common ratio, the swing's crest and trough, or the mean over one swing period; read ×1.05 (SAE J376) |
+//! | load | [`load_estimate`], [`breakaway`], [`static_load`], [`held_pendulum`], [`swing`], [`load_jump`], [`period_mean`], [`swing_midrange`] | W from the model's piston force (quadratic in W), friction per direction, boom inertia; the static hook mass from a bank of rope hypotheses (paid out, or held at 3–22 m, each with its swing): the lowest load any rope explains, floored by their averages; a load added at rest after a move, from the consistent ropes' common ratio, the swing's crest and trough, or the mean over one swing period; read ×1.05 (SAE J376) |
 //! | capacity | [`capacity`] | tipping load from the affine jack reaction, safety factor, chart |
 //! | plausibility | [`negative_load`] | a load estimate no hook can give is a FAULT |
 //! | decision | [`state_machine`] | NORMAL / WARNING / OVERLOAD / FAULT, hysteresis, outputs |
@@ -45,6 +45,7 @@
 #![cfg_attr(not(any(test, feature = "std")), no_std)]
 #![forbid(unsafe_code)]
 
+pub mod breakaway;
 pub mod calibration;
 pub mod capacity;
 pub mod checks;

@@ -145,6 +145,15 @@
 //! creeps (its rate over [`SETTLED_RAD_S`]): its force may still carry the
 //! seals' sliding friction.
 //!
+//! ## The seals' breakaway: the averages without it
+//!
+//! A raise starts with the seals' up-friction in the force before the
+//! angle shows the boom rising ([`crate::breakaway`]). Raised to W_fast at
+//! once, the averages took it up and held it into the raise, where the
+//! sliding friction was out of the force but not out of them (1.087 × the
+//! load, campaign seed 12 #7607). So while the breakaway is taken out of
+//! the force (`seals_hold`), the averages are set to W_fast, both ways.
+//!
 //! ## Power-up: the filters' start-up is no luff
 //!
 //! The filters start settled on their first sample, and that sample's noise
@@ -764,6 +773,10 @@ pub struct LoadTerms<T> {
     /// none to give): read while the boom is still and every rope agrees
     /// (see the module doc).
     pub force_still_n: Option<T>,
+    /// A raise's start, seen ([`crate::breakaway`]): the seals' part of
+    /// the force's rise at rest is out of `force_n`, and the averages are
+    /// set to the weighing without it.
+    pub seals_hold: bool,
     /// Boom angle at the force's instant (rad).
     pub angle_rad: T,
 }
@@ -875,6 +888,8 @@ pub struct StaticLoadBank<T> {
     /// At the last [`update`](Self::update) every possible rope weighed and
     /// their factors agreed within [`AGREEMENT`]: no swing predicted.
     factors_agree: bool,
+    /// At the last update the force swung (see [`Self::force_swings`]).
+    force_swings: bool,
     /// The highest W_fast at rest since the last move stopped (kg): a load
     /// added there that nothing weighed shows in it.
     rest_peak_kg: Option<T>,
@@ -953,6 +968,7 @@ impl<T: Real> StaticLoadBank<T> {
             advanced_s: T::lit(0.0),
             started_s: T::lit(0.0),
             factors_agree: true,
+            force_swings: false,
             rest_peak_kg: None,
             weighing_doubted: false,
             hanging_kg: None,
@@ -1066,6 +1082,13 @@ impl<T: Real> StaticLoadBank<T> {
     /// factor needs the force and the pendulums at one instant.
     pub fn swing_predicted(&self) -> bool {
         !self.factors_agree
+    }
+
+    /// The force repeats a swing ([`crate::period_mean`]): it rises and
+    /// falls with the load's swing, and no seals' breakaway is read in it
+    /// ([`crate::breakaway`]).
+    pub fn force_swings(&self) -> bool {
+        self.force_swings
     }
 
     /// Forgets swing and averages (after a sensor fault broke the angle).
@@ -1480,8 +1503,13 @@ impl<T: Real> StaticLoadBank<T> {
                 // averages' pace: the force leads the lagging angle at the
                 // start of a move (its J·θ̈ and ride-down read as a dip of
                 // 6 % over 0.3 s before the rate is seen) and that dip is no
-                // weighing to start the move from.
-                let stages = h.slow_kg.map_or([fast; SLOW_STAGES], |st| st.map(|x| x.max(fast)));
+                // weighing to start the move from. Set to it while the seals'
+                // breakaway is taken out of the force: the averages took
+                // its rise up before the angle showed the raise.
+                let stages = match h.slow_kg {
+                    Some(st) if !terms.seals_hold => st.map(|x| x.max(fast)),
+                    _ => [fast; SLOW_STAGES],
+                };
                 h.slow_kg = Some(stages);
             }
             let last = h.slow_kg.and_then(|st| st.last().copied());
@@ -1555,7 +1583,8 @@ impl<T: Real> StaticLoadBank<T> {
         // Before any move the ropes hang still and agree: a swing the force
         // repeats is one none of them predicts (see the module doc,
         // "Switched on while the load swings").
-        let unseen_swing = !self.moved && self.period_mean.swings(terms.at_rest.at_zero);
+        self.force_swings = self.period_mean.swings(terms.at_rest.at_zero);
+        let unseen_swing = !self.moved && self.force_swings;
         let mean_weighs = period_kg.is_some() && (!agree || unseen_swing) && self.period_mean.steady(terms.at_rest.at_zero);
         let load_kg = match period_kg {
             Some(w) if mean_weighs => {
@@ -1665,6 +1694,7 @@ mod tests {
                     at_rest: at_rest(),
                     force_n: force,
                     force_still_n: None,
+                    seals_hold: false,
                     angle_rad: th,
                 })
                 .unwrap();
@@ -1702,6 +1732,7 @@ mod tests {
                     at_rest: at_rest(),
                     force_n: 100_000.0 + 10.0 * w * (1.0 + bounce),
                     force_still_n: None,
+                    seals_hold: false,
                     angle_rad: th,
                 })
                 .unwrap();
@@ -1731,6 +1762,7 @@ mod tests {
                     at_rest: at_rest(),
                     force_n: 100_000.0 + 10.0 * w,
                     force_still_n: None,
+                    seals_hold: false,
                     angle_rad: th,
                 })
                 .unwrap();
@@ -1744,6 +1776,33 @@ mod tests {
                 assert!(est.load_kg >= floor - 1.0, "{k}: {} < {floor}", est.load_kg);
             }
         }
+    }
+
+    /// Before any move the averages are raised to W_fast at once and
+    /// lowered at their own pace; while the seals' breakaway is taken out of
+    /// the force they are set to W_fast, so the rise they took up before the
+    /// angle showed the raise is not carried into it.
+    #[test]
+    fn a_breakaway_sets_the_averages_to_the_weighing() {
+        let mut bank = StaticLoadBank::new(SwingGeometry::<f64>::coles_930());
+        let th = 50f64.to_radians();
+        let mut step = |w: f64, seals_hold: bool| {
+            bank.advance(th, 0.0, 0.0, 0.01);
+            let terms = LoadTerms { at_rest: at_rest(), force_n: 100_000.0 + 10.0 * w, force_still_n: None, seals_hold, angle_rad: th };
+            bank.update(&terms).unwrap()
+        };
+        for _ in 0..200 {
+            step(3000.0, false);
+        }
+        // The friction's rise, read as 150 kg more, before the angle shows it.
+        for _ in 0..100 {
+            step(3150.0, false);
+        }
+        let raised = step(3000.0, false);
+        assert!(raised.slow_kg.is_some_and(|s| s > 3140.0), "{raised:?}");
+        // Taken out: the averages are the weighing again.
+        let held = step(3000.0, true);
+        assert!(held.slow_kg.is_some_and(|s| (s - held.fast_kg).abs() < 1e-9 && s < 3150.0), "{held:?}");
     }
 }
 
@@ -1818,6 +1877,7 @@ mod rest_tests {
                     at_rest: at_rest(),
                     force_n: 100_000.0 + 10.0 * w * f,
                     force_still_n: None,
+                    seals_hold: false,
                     angle_rad: th,
                 })
                 .unwrap();
@@ -1957,7 +2017,7 @@ mod rest_tests {
             bank.advance(th, rate, acc, dt);
             world.update(&BoomTip::new(th.sin_cos(), g.boom_length_m, rate, acc, dt));
             let (w, f) = if t < set_down { (w0, world.factor(0).unwrap()) } else if t < lift { (0.0, 1.0) } else { (w1, 1.0) };
-            let terms = LoadTerms { at_rest: at_rest(), force_n: 100_000.0 + 10.0 * w * f, force_still_n: None, angle_rad: th };
+            let terms = LoadTerms { at_rest: at_rest(), force_n: 100_000.0 + 10.0 * w * f, force_still_n: None, seals_hold: false, angle_rad: th };
             out.push((t, bank.update(&terms).unwrap().load_kg, w, terms.force_n));
         }
         (bank, out)

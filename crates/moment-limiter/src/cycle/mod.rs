@@ -49,6 +49,7 @@ pub use report::{Estimate, StepReport};
 use crane_model::loads::load_model::{BoomState, CycleQuery, HookLoadModel};
 use crane_model::Real;
 
+use crate::breakaway::Breakaway;
 use crate::capacity::CapacityError;
 use crate::checks::{FaultKind, PlausibilityMonitor, SensorFault};
 use crate::clock::{Clock, Ticks};
@@ -198,6 +199,10 @@ pub struct Limiter<T, M> {
     /// only the force's): its start-up is no acceleration of the boom.
     angle_restarted: bool,
     direction: DirectionDetector<T>,
+    /// The seals' hold at the start of a raise ([`crate::breakaway`]), and
+    /// what they hold in this cycle's measurement.
+    breakaway: Breakaway<T>,
+    seals_n: T,
     machine: StateMachine<T>,
     log: EventLog<T, EVENT_LOG_LEN>,
     clock: Clock<T>,
@@ -236,6 +241,8 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
             angle_gap_s: None,
             angle_restarted: false,
             direction: DirectionDetector::new(config.direction),
+            breakaway: Breakaway::new(),
+            seals_n: T::lit(0.0),
             machine: StateMachine::new(config.thresholds),
             log: EventLog::new(),
             clock: Clock::new(config.clock),
@@ -502,7 +509,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         let (at_rest, force_n) = load_equation(
             &load_terms,
             m.accel_rad_s2(),
-            m.piston_force_n,
+            m.piston_force_n - self.seals_n,
             &self.config.calibration,
             m.friction,
             m.static_friction_share,
@@ -514,7 +521,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         let force_still_n = load_equation(
             &load_terms,
             m.accel_rad_s2(),
-            m.force_still_n,
+            m.force_still_n - self.seals_n,
             &self.config.calibration,
             m.friction,
             m.static_friction_share,
@@ -530,6 +537,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
                     at_rest,
                     force_n,
                     force_still_n,
+                    seals_hold: self.seals_n > T::lit(0.0),
                     angle_rad: m.boom.angle_rad,
                 })
                 .ok_or(Fault::Estimate(EstimateError::NotObservable))?,
