@@ -59,9 +59,9 @@
 //! the mean over one swing period.
 //!
 //! What it costs: a load added at rest by no more than the band (with the
-//! campaign's seals 4–14 % of the force) while the angle reads a rise is
-//! read low by up to F_up, for as long as the angle reads it, at most
-//! [`RISE_S`]. The 110 % lift-off taken up at 80°, whose jerk shows
+//! campaign's seals, whose F_up is 4–7 % of the force, 8–14 %) while the
+//! angle reads a rise is read low by up to F_up, for as long as the angle
+//! reads it, at most [`RISE_S`]. The 110 % lift-off taken up at 80°, whose jerk shows
 //! 0.08 °/s upward for 0.25 s, rises past the band before it nears the cut.
 
 use crane_model::Real;
