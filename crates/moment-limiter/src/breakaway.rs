@@ -22,8 +22,8 @@
 //! a slow swing's trough can look calm, and the angle's noise hides the
 //! boom's give in its rise), and whose force is **calm**: it has stayed
 //! within a range of [`CALM`]·F_up for [`CALM_S`]; the highest force of
-//! that range, F_calm, is the force
-//! before the valve opened, and its noise no rise. Let ΔF = F − F_calm and
+//! that range, F_calm, is the force before the valve opened, and its noise
+//! no rise. Let ΔF = F − F_calm and
 //! ω̇ the filtered rate (°/s). The rise is the seals' only
 //!
 //! - **while it is no more than they can hold, and holds**:
@@ -45,7 +45,7 @@
 //! sets its averages to the weighing ([`crate::static_load`]): raised at
 //! once at rest, they took the rise up before the angle showed it, and
 //! would carry it into the raise. Whatever ends a rise (past the band,
-//! fallen back, or stayed) ends the calm too: the force must be calm again
+//! fallen under the calm, or stayed) ends the calm too: the force must be calm again
 //! before the next. Before any calibration F_up is 0 and nothing changes.
 //!
 //! The angle shows the rise late (campaign seed 12 #7607: the filtered
@@ -61,8 +61,9 @@
 //! What it costs: a load added at rest by no more than the band (with the
 //! campaign's seals, whose F_up is 4–7 % of the force, 8–14 %) while the
 //! angle reads a rise is read low by up to F_up, for as long as the angle
-//! reads it, at most [`RISE_S`]. The 110 % lift-off taken up at 80°, whose jerk shows
-//! 0.08 °/s upward for 0.25 s, rises past the band before it nears the cut.
+//! reads it, at most [`RISE_S`]. The 110 % lift-off taken up at 80°, whose
+//! jerk shows 0.08 °/s upward for 0.25 s, rises past the band before it
+//! nears the cut.
 
 use crane_model::Real;
 

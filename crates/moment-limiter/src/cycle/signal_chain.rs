@@ -322,7 +322,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         // A raise's start: the seals' part of the force (crate::breakaway).
         let cal = &self.config.calibration;
         let force = force_still_f - cal.force_offset_n;
-        let up_friction_n = cal.friction_up_n + cal.friction_up_per_force * force.abs();
+        let up_friction_n = cal.sliding_n(Direction::Up, force, T::lit(0.0));
         let swinging = self.bank.as_ref().is_some_and(|b| b.force_swings());
         let released = direction == Direction::Still && self.static_friction_share < T::lit(0.01) && !swinging;
         self.seals_n = self.breakaway.update(force, released, (angle_f, rate_f), up_friction_n, dt_s);
