@@ -1591,41 +1591,31 @@ fn lift_off_at_other_angles() {
     assert!(failures.is_empty(), "{failures:#?}");
 }
 
-/// KNOWN GAP, measured (f64): taken up in 0.5 s, 110 % on the 3 m held rope
-/// at 80° is cut 1.03 s after it leaves the ground (the other 38 cases of
-/// 110 % within 1 s, 90 % never). The boom bends under the load as it is
-/// taken up, its tip moves out, and a 3 m rope at a steep boom is left
-/// swinging inward by up to 0.9° (tan 80° · tan 0.9° = 9 % less pull). The
-/// rope bank follows that swing now (`moment_limiter::static_load`, "A
-/// lift-off: the boom's give swings the load"), which took 65° within 1 s
-/// and 80° from 1.05 s to 1.03 s; but the bank reads the lowest rope, and
-/// in the inward half swing that is the least inward, the longest.
-#[test]
-#[ignore = "KNOWN GAP: 110 % taken up in 0.5 s on a 3 m rope at 80 deg is cut 1.03 s after it leaves the ground"]
-fn lift_off_in_half_a_second_on_a_short_rope_at_a_steep_boom_known_gap() {
-    let (failures, _) = lift_offs_over(Precision::F64, &[10.0, 20.0, 35.0, 65.0, 80.0], &[0.5]);
-    assert!(failures.is_empty(), "{failures:#?}");
-}
-
-/// The known gap above pinned at its measured size: taken up in 0.5 s, 90 %
-/// is never an OVERLOAD and 110 % is cut within 1.10 s of leaving the
-/// ground (measured, f64 and f32: at most 1.03 s, the 3 m rope at 80°), so
-/// that the gap cannot widen unseen.
-fn lift_off_in_half_a_second_is_cut_within_1_1_s(precision: Precision) {
+/// Lift-offs taken up in 0.5 s at 10°–80°, every rope, both friction laws:
+/// 90 % never cut, 110 % within 1 s of leaving the ground (measured, f64 and
+/// f32: at most 0.88 s, the 3 m rope at 80°). The boom bends under the load
+/// as it is taken up, its tip moves out, and a 3 m rope at a steep boom is
+/// left swinging inward by up to 0.9° (tan 80° · tan 0.9° = 9 % less
+/// pull). The rope bank follows that swing (`moment_limiter::static_load`,
+/// "A lift-off: the boom's give swings the load"), but it reads the lowest
+/// rope, and in the inward half swing that is the least inward, the
+/// longest: through the still force's four filter stages that case was cut
+/// 1.03 s after (1.05 s before the bank followed the give), through three
+/// ("A lift-off: one stage fewer") 0.88 s after.
+fn lift_off_in_half_a_second_is_cut_within_1_s(precision: Precision) {
     let (failures, worst) = lift_offs_over(precision, &[10.0, 20.0, 35.0, 65.0, 80.0], &[0.5]);
-    let other: Vec<&String> = failures.iter().filter(|f| !f.ends_with("s after it leaves the ground")).collect();
-    assert!(other.is_empty(), "{other:#?}");
-    assert!(worst <= 1.10, "110 % cut {worst:.2} s after it leaves the ground");
+    assert!(failures.is_empty(), "{failures:#?}");
+    assert!(worst <= 1.0, "110 % cut {worst:.2} s after it leaves the ground");
 }
 
 #[test]
-fn lift_off_in_half_a_second_is_cut_within_1_1_s_f64() {
-    lift_off_in_half_a_second_is_cut_within_1_1_s(Precision::F64);
+fn lift_off_in_half_a_second_is_cut_within_1_s_f64() {
+    lift_off_in_half_a_second_is_cut_within_1_s(Precision::F64);
 }
 
 #[test]
-fn lift_off_in_half_a_second_is_cut_within_1_1_s_f32() {
-    lift_off_in_half_a_second_is_cut_within_1_1_s(Precision::F32);
+fn lift_off_in_half_a_second_is_cut_within_1_s_f32() {
+    lift_off_in_half_a_second_is_cut_within_1_s(Precision::F32);
 }
 
 /// A lift-off snatched, the load taken up in 0.3 s, at 10°–80°, every
@@ -1667,57 +1657,50 @@ fn snatched_lift_offs(precision: Precision) -> (f64, Vec<String>, f64, Vec<Strin
     (worst, false_cut, peak90, uncut)
 }
 
-/// KNOWN GAP, measured (f64 and f32): snatched in 0.3 s, 110 % is cut
-/// 0.99–1.12 s after it leaves the ground at 20°–80° (at 10° at once, by
-/// the FAULT of p1 past its range), not within 1 s; the 3 m rope at 80° is
-/// the slowest. The chain's step response sets it. The 4-stage force filter
-/// alone crosses 0.866 of a step 0.68 s after a 0.3 s ramp ends; the
-/// 0.7 Hz stage against the bounce (`moment_limiter::static_load`, "A
-/// still boom") adds 0.31 s, the 50 ms debounce the rest. Without that
-/// stage a 1.7 Hz bounce of ±68 % reads 90 % as an OVERLOAD, so a snatch
-/// seen within 1 s and a bounce of unknown frequency not read as load meet
-/// here.
+/// Snatched in 0.3 s, 110 % is cut within 1 s of leaving the ground at
+/// 20°–80° (at 10° at once, by the FAULT of p1 past its range), and 90 % is
+/// never an OVERLOAD and reads at most u 0.99. Measured, f64 and f32: cut at
+/// most 0.98 s after, the 3 m rope at 80° the slowest; 90 % at most u
+/// 0.985. Before any move the still force's load reads a load rising
+/// from an empty hook through three of its filter's four stages
+/// (`moment_limiter::static_load`, "A lift-off: one stage fewer"); through
+/// all four, 110 % was cut 0.99–1.12 s after it left the ground and 90 %
+/// read at most 0.970: the four-stage filter alone crosses 0.866 of a step
+/// 0.68 s after a 0.3 s ramp ends, the 0.7 Hz stage against the bounce
+/// (`moment_limiter::static_load`, "A still boom") adds 0.31 s, the 50 ms
+/// debounce the rest. The margin of 90 % is what the stage cost: without
+/// the 0.7 Hz stage a 1.7 Hz bounce of ±68 % reads 90 % as an OVERLOAD.
 ///
-/// 90 % is never an OVERLOAD (highest estimated u 0.970). Before the rope
-/// bank followed the tip's give in a lift-off (`moment_limiter::static_load`,
-/// "A lift-off: the boom's give swings the load"), 90 % on the 3 m rope at
-/// 80° was: the swing the snatch starts (the tip's deflection grows by
-/// 4.6 cm, `crane-sim simulate --from-deg 80 --lift-off-s 0.3 --load-kg
-/// 9000 --rope held --rope-length-m 3`, and the load swings ±0.8°) pulls
-/// 8 % more at its outward crest at tan 80° = 5.7, and no rope of the bank
-/// swung with it (highest u 1.0004 here; 1.0004–1.0035 over seven noise
-/// seeds with `crane-sim synth`). And 110 % was cut up to 1.14 s after.
-#[test]
-#[ignore = "KNOWN GAP: snatched in 0.3 s, 110 % is cut 0.99-1.12 s after it leaves the ground at 20-80 deg"]
-fn lift_off_snatched_in_0_3_s_known_gap() {
-    let (worst, false_cut, _, uncut) = snatched_lift_offs(Precision::F64);
-    assert!(worst <= 1.0 && false_cut.is_empty() && uncut.is_empty(), "110 % cut {worst:.2} s after; 90 % cut: {false_cut:#?}; 110 % never cut: {uncut:#?}");
-}
-
-/// The known gap above pinned at its measured size: snatched in 0.3 s,
-/// 110 % is cut within 1.13 s of leaving the ground (measured 1.12 s), and
-/// 90 % is never an OVERLOAD and reads at most u 0.98 (measured 0.970).
-fn lift_off_snatched_in_0_3_s_stays_as_measured(precision: Precision) {
+/// Before the rope bank followed the tip's give in a lift-off
+/// (`moment_limiter::static_load`, "A lift-off: the boom's give swings the
+/// load"), 90 % on the 3 m rope at 80° was an OVERLOAD: the swing the
+/// snatch starts (the tip's deflection grows by 4.6 cm, `crane-sim simulate
+/// --from-deg 80 --lift-off-s 0.3 --load-kg 9000 --rope held --rope-length-m
+/// 3`, and the load swings ±0.8°) pulls 8 % more at its outward crest at
+/// tan 80° = 5.7, and no rope of the bank swung with it (highest u 1.0004
+/// here; 1.0004–1.0035 over seven noise seeds with `crane-sim synth`). And
+/// 110 % was cut up to 1.14 s after.
+fn lift_off_snatched_in_0_3_s_is_cut_within_1_s(precision: Precision) {
     let (worst, false_cut, peak90, uncut) = snatched_lift_offs(precision);
     assert!(uncut.is_empty(), "110 % never cut: {uncut:#?}");
-    assert!(worst <= 1.13, "110 % cut {worst:.2} s after it leaves the ground");
+    assert!(worst <= 1.0, "110 % cut {worst:.2} s after it leaves the ground");
     assert!(false_cut.is_empty(), "{false_cut:#?}");
-    assert!(peak90 <= 0.98, "90 % read as u {peak90:.4}");
+    assert!(peak90 <= 0.99, "90 % read as u {peak90:.4}");
 }
 
 #[test]
-fn lift_off_snatched_in_0_3_s_stays_as_measured_f64() {
-    lift_off_snatched_in_0_3_s_stays_as_measured(Precision::F64);
+fn lift_off_snatched_in_0_3_s_is_cut_within_1_s_f64() {
+    lift_off_snatched_in_0_3_s_is_cut_within_1_s(Precision::F64);
 }
 
 #[test]
-fn lift_off_snatched_in_0_3_s_stays_as_measured_f32() {
-    lift_off_snatched_in_0_3_s_stays_as_measured(Precision::F32);
+fn lift_off_snatched_in_0_3_s_is_cut_within_1_s_f32() {
+    lift_off_snatched_in_0_3_s_is_cut_within_1_s(Precision::F32);
 }
 
 /// 90 % of rated lifted on the 3 m held rope at 80° (where the swing that
 /// the boom's give starts pulls most, see
-/// [`lift_off_snatched_in_0_3_s_known_gap`]), taken up in `take_up` s,
+/// [`lift_off_snatched_in_0_3_s_is_cut_within_1_s`]), taken up in `take_up` s,
 /// both friction laws, noise seeds 1–8: the OVERLOADs and the highest
 /// estimated u.
 fn ninety_percent_on_a_3_m_rope_at_80_degrees(precision: Precision, take_up: f64) -> (usize, f64) {
@@ -1736,16 +1719,20 @@ fn ninety_percent_on_a_3_m_rope_at_80_degrees(precision: Precision, take_up: f64
 }
 
 /// 90 % lifted on the 3 m rope at 80°, over 16 noise draws and take-ups of
-/// 0.3 s to 2 s, is never an OVERLOAD and reads at most u 0.96 (measured,
-/// f64 and f32 alike: 0.9486 in 0.3 s, 0.9485 in 0.5 s, 0.9481 in 1 s,
-/// 0.9404 in 2 s; the ×1.05 reading of 90 % is 0.945). Before the rope bank
+/// 0.3 s to 2 s, is never an OVERLOAD and reads at most u 0.97 (measured,
+/// f64 and f32 alike: 0.9609 in 0.3 s, 0.9595 in 0.5 s, 0.9573 in 1 s,
+/// 0.9403 in 2 s; the ×1.05 reading of 90 % is 0.945). Through the still
+/// force's four filter stages, before a load rising from an empty hook was
+/// read through three (`moment_limiter::static_load`, "A lift-off: one
+/// stage fewer"), 0.9486, 0.9485, 0.9481 and 0.9404: the stage fewer passes
+/// more of the bounce, and this test's bound was 0.96. Before the rope bank
 /// followed the tip's give in a lift-off, the swing the take-up starts read
 /// as load at its outward crest: an OVERLOAD in all 16 draws taken up in
 /// 0.3 s (highest u 1.0035), in 8 in 0.5 s (1.0028), and 0.9958 in 1 s.
 fn ninety_percent_lifted_on_a_3_m_rope_at_80_degrees_is_no_overload(precision: Precision) {
     for take_up in [0.3, 0.5, 1.0, 2.0] {
         let (cut, peak) = ninety_percent_on_a_3_m_rope_at_80_degrees(precision, take_up);
-        assert!(cut == 0 && peak <= 0.96, "taken up in {take_up} s: {cut} OVERLOADs, highest u {peak:.4}");
+        assert!(cut == 0 && peak <= 0.97, "taken up in {take_up} s: {cut} OVERLOADs, highest u {peak:.4}");
     }
 }
 
@@ -1906,32 +1893,36 @@ fn lift_off_against_an_ideal_bounce_f32() {
 
 /// The same taken up in 0.5 s and 0.3 s, where the filters that keep a
 /// 1 Hz bounce out cannot also tell 90 % from 110 % within a second. A
-/// bounce of 1 Hz reads 90 % as an OVERLOAD in 8 of its 12 cases (peak
-/// estimated u up to 1.038 taken up in 0.5 s, 1.071 in 0.3 s: its first
+/// bounce of 1 Hz reads 90 % as an OVERLOAD in 11 of its 12 cases (peak
+/// estimated u up to 1.068 taken up in 0.5 s, 1.112 in 0.3 s: its first
 /// crest pulls up to twice the load, and the filters pass a fifth of
-/// 1 Hz); all 12 were before the rope bank followed the tip's give in a
-/// lift-off, whose swing, which this world's force does not have, now
-/// lowers the lowest rope's reading. At 1.5–2 Hz, 110 % taken up in 0.3 s is
-/// cut 0.97–1.08 s after it leaves the ground (0.90–0.96 s in 0.5 s). In
-/// the asserted cases (`lift_off_against_an_ideal_bounce_*`, 0.8 s and
-/// slower) 90 % reads at most 0.977 and 110 % is cut within 0.84 s.
+/// 1 Hz); 8 of 12 (up to 1.038 and 1.071) through the still force's four
+/// filter stages, before a load rising from an empty hook was read through
+/// three (`moment_limiter::static_load`, "A lift-off: one stage fewer"),
+/// and all 12 before the rope bank followed the tip's give in a lift-off,
+/// whose swing, which this world's force does not have, lowers the lowest
+/// rope's reading. At 1.5–2 Hz, 90 % reads at most u 0.992 (0.3 s) and
+/// 0.963 (0.5 s), and 110 % is cut within 0.99 s (0.97–1.08 s in 0.3 s
+/// through four stages). In the asserted cases
+/// (`lift_off_against_an_ideal_bounce_*`, 0.8 s and slower) 90 % reads at
+/// most 0.989 (0.977 through four stages) and 110 % is cut within 0.69 s.
 #[test]
-#[ignore = "KNOWN GAP: a lift-off snatched in 0.5 s or less against a bounce of 1-2 Hz: 90 % cuts (1 Hz) or, in 0.3 s, 110 % is cut up to 1.08 s after leaving the ground (1.5-2 Hz)"]
+#[ignore = "KNOWN GAP: a lift-off snatched in 0.5 s or less against a bounce of 1 Hz: 90 % is an OVERLOAD in 11 of 12 cases"]
 fn lift_off_snatched_against_an_ideal_bounce_known_gap() {
     let (failures, _) = lift_off_against_an_ideal_bounce(Precision::F64, &[0.3, 0.5]);
     assert!(failures.is_empty(), "{failures:#?}");
 }
 
 /// The known gap above pinned at its measured size: snatched in 0.3 s or
-/// 0.5 s against an ideal bounce of 1–2 Hz, 110 % is cut within 1.15 s of
-/// leaving the ground (measured, f64: at most 1.08 s), and 90 % is an
-/// OVERLOAD only behind the 1 Hz bounce (the gap's other half).
+/// 0.5 s against an ideal bounce of 1–2 Hz, 110 % is cut within 1 s of
+/// leaving the ground (measured, f64: at most 0.99 s), and 90 % is an
+/// OVERLOAD only behind the 1 Hz bounce (the gap).
 #[test]
-fn lift_off_snatched_against_an_ideal_bounce_is_cut_within_1_15_s() {
+fn lift_off_snatched_against_an_ideal_bounce_is_cut_within_1_s() {
     let (failures, worst) = lift_off_against_an_ideal_bounce(Precision::F64, &[0.3, 0.5]);
-    let other: Vec<&String> = failures.iter().filter(|f| !f.ends_with("s after lift") && !(f.contains("90 % of rated, bounce 1 Hz"))).collect();
+    let other: Vec<&String> = failures.iter().filter(|f| !f.contains("90 % of rated, bounce 1 Hz")).collect();
     assert!(other.is_empty(), "{other:#?}");
-    assert!(worst <= 1.15, "110 % cut {worst:.2} s after it leaves the ground");
+    assert!(worst <= 1.0, "110 % cut {worst:.2} s after it leaves the ground");
 }
 
 /// Runs `f` with this thread's `setting` at `value`, then as before.
@@ -3848,14 +3839,17 @@ fn a_bounce_on_the_rope_keeps_the_bounds_f32() {
 /// Measured: the highest estimated u at 85 % 0.914 (f64 and f32), the
 /// lowerings cut at true u 0.952–0.979 (f32 0.952–0.978); the lift-offs cut
 /// within 0.84 s (1 s) and 0.60 s (2 s), 90 % read at most u 0.944 (f64).
-/// Taken up in 0.5 s, as on the bank's own lengths, 110 % is cut up to
-/// 1.02 s after at 80° and 1.00 s at 65° (see
-/// `lift_off_in_half_a_second_on_a_short_rope_at_a_steep_boom_known_gap`).
+/// Taken up in 0.5 s at 65° and 80°, 110 % is cut within 0.87 s (f64 and
+/// f32), 90 % never; through the still force's four filter stages, before
+/// a load rising from an empty hook was read through three
+/// (`moment_limiter::static_load`, "A lift-off: one stage fewer"), up to
+/// 1.02 s after, as on the bank's own lengths.
 fn ropes_between_the_banks_lengths(precision: Precision) {
     let ropes: Vec<Rope> = (0..10).map(|k| Rope::Held(0.05 + 0.1 * f64::from(k))).collect();
     no_false_overload(precision, &ropes, &SEALS);
     lowering_past_rated_radius(precision, &ropes, &SEALS);
-    let (failures, _) = lift_offs_on(precision, &[80.0], &[1.0, 2.0], &ropes);
+    let (mut failures, _) = lift_offs_on(precision, &[80.0], &[1.0, 2.0], &ropes);
+    failures.extend(lift_offs_on(precision, &[65.0, 80.0], &[0.5], &ropes).0);
     assert!(failures.is_empty(), "{failures:#?}");
 }
 
@@ -3905,9 +3899,13 @@ fn paid_out_to_another_clearance_keeps_the_bounds() {
 /// 1.005–1.014/1.037–1.044/1.056–1.071 (0.02 s and 0.1 s measured alike).
 /// What the lag does cost is a lift-off's time (`lift_offs_over` at 20°, 50°
 /// and 80°, every rope, both friction laws): behind 0.05 s, 110 % taken up in
-/// 2 s, 1 s and 0.5 s is cut up to 0.65 s, 0.88 s and 1.08 s after it leaves
-/// the ground (6 of 24 in 0.5 s after 1 s); behind 0.2 s up to 0.85 s, 1.07 s
-/// (14 of 24 after 1 s) and 1.27 s; 0.60 s, 0.84 s and 1.03 s without.
+/// 2 s, 1 s and 0.5 s is cut up to 0.49 s, 0.74 s and 0.93 s after it leaves
+/// the ground; behind 0.2 s up to 0.68 s, 0.92 s and 1.13 s (all 24 in 0.5 s
+/// after 1 s). Through the still force's four filter stages, before a load
+/// rising from an empty hook was read through three
+/// (`moment_limiter::static_load`, "A lift-off: one stage fewer"): 0.65 s,
+/// 0.88 s and 1.08 s (6 of 24 after 1 s), and 0.85 s, 1.07 s (14 of 24) and
+/// 1.27 s.
 #[test]
 fn pressure_transducers_behind_snubbers_keep_the_bounds_and_the_band() {
     for tau_s in [0.05, 0.2] {
@@ -4016,14 +4014,15 @@ fn the_second_formulation(precision: Precision) {
 /// estimated u 0.920 but on the 3 m rope raised 30° → 85° while its swing
 /// takes p1 past its range (1.33–1.40 in that FAULT, which cuts, as on the
 /// simulator's logs); lowerings cut at true u 0.939–1.010; 110 % taken up in
-/// 1 s or 2 s cut within 0.82 s of leaving the ground. Taken up in 0.5 s,
-/// which on the simulator's logs is cut up to 1.03 s after
-/// (`lift_off_in_half_a_second_on_a_short_rope_at_a_steep_boom_known_gap`),
-/// 110 % is cut within 0.98 s here (asserted within 1 s, 90 % never): the
-/// simulator's bounce on the boom's bending costs that case its second.
-/// Snatched in 0.3 s it is cut up to 1.06 s after (pinned at 1.07 s; 1.12 s
-/// on the simulator's logs): there the filters' step response alone is
-/// over the second (`lift_off_snatched_in_0_3_s_known_gap`).
+/// 1 s or 2 s cut within 0.82 s of leaving the ground. Taken up in 0.5 s
+/// and snatched in 0.3 s, 110 % is cut within 0.82 s and 0.90 s here, 90 %
+/// never (0.88 s and 0.98 s on the simulator's logs, whose bounce on the
+/// boom's bending costs them; `lift_off_in_half_a_second_is_cut_within_1_s_*`,
+/// `lift_off_snatched_in_0_3_s_is_cut_within_1_s_*`). Through the still
+/// force's four filter stages, before a load rising from an empty hook was
+/// read through three (`moment_limiter::static_load`, "A lift-off: one
+/// stage fewer"), they were cut up to 0.98 s and 1.06 s after here: the
+/// filters' step response alone was over the second for a snatch.
 #[test]
 fn the_second_formulation_keeps_the_bounds_and_the_band_f64() {
     the_second_formulation(Precision::F64);
@@ -4042,11 +4041,9 @@ fn the_second_formulation_keeps_the_bounds_and_the_band_f64() {
         // filters alone cost a fast take-up.
         let (half, slowest_half) = lift_offs_over(Precision::F64, &[20.0, 50.0, 65.0, 80.0], &[0.5]);
         let (snatched, slowest_snatched) = lift_offs_over(Precision::F64, &[20.0, 50.0, 65.0, 80.0], &[0.3]);
-        let snatched_uncut: Vec<&String> = snatched.iter().filter(|f| !f.ends_with("after it leaves the ground")).collect();
-        println!("the second formulation: 110 % taken up in 0.5 s cut within {slowest_half:.2} s, in 0.3 s within {slowest_snatched:.2} s; 0.3 s failures other than late: {snatched_uncut:?}");
+        println!("the second formulation: 110 % taken up in 0.5 s cut within {slowest_half:.2} s, in 0.3 s within {slowest_snatched:.2} s");
         failures.extend(half);
-        failures.extend(snatched_uncut.into_iter().cloned());
-        assert!(slowest_snatched <= 1.07, "snatched in 0.3 s, cut {slowest_snatched:.2} s after");
+        failures.extend(snatched);
         assert!(failures.is_empty(), "{failures:#?}");
     });
 }

@@ -261,6 +261,20 @@ impl<T: Real> LowPass<T> {
         let last = self.stage_count.checked_sub(1)?;
         self.stages.and_then(|st| st.get(last).copied())
     }
+
+    /// How far the output of the stage before the last leads the output:
+    /// added to the output, the same filter with one stage fewer, at no cost
+    /// (the stages are in series). 0 before the first sample or with a
+    /// single stage.
+    pub fn last_stage_lead(&self) -> T {
+        match (self.stage_count.checked_sub(2), self.stages) {
+            (Some(k), Some(st)) => match (st.get(k), st.get(k + 1)) {
+                (Some(&before), Some(&last)) => before - last,
+                _ => T::lit(0.0),
+            },
+            _ => T::lit(0.0),
+        }
+    }
 }
 
 #[cfg(test)]
@@ -423,6 +437,43 @@ mod tests {
                 assert!(ya >= yb - 1e-12 && (-1e-12..=1.0 + 1e-12).contains(&ya), "step at {step_at}, sample {k}: {ya} {yb}");
             }
         }
+    }
+
+    /// The output plus the last stage's lead is the filter with one stage
+    /// fewer, sample by sample, at uneven steps too (the stages are in
+    /// series); started from the mean, up to what the shorter filter stops
+    /// following of the start (its last stage's share falls under
+    /// [`START_SHARE_END`] sooner). A single stage has no lead.
+    #[test]
+    fn the_last_stage_lead_gives_the_filter_with_one_stage_fewer() {
+        for from_mean in [false, true] {
+            let make = |n: usize| {
+                let f = LowPass::new(1.2_f64, n).with_period_s(0.01);
+                if from_mean {
+                    f.starting_from_the_mean()
+                } else {
+                    f
+                }
+            };
+            let (mut four, mut three) = (make(4), make(3));
+            assert_eq!(four.last_stage_lead(), 0.0);
+            let mut seed = 11u32;
+            let mut worst: f64 = 0.0;
+            for k in 0..600 {
+                seed = seed.wrapping_mul(1_103_515_245).wrapping_add(12345);
+                let x = if k >= 200 { 150.0 } else { 100.0 } + f64::from(seed >> 16) / 65_536.0 - 0.5;
+                let dt = if k % 7 == 3 { 0.013 } else { 0.01 };
+                let (y4, y3) = (four.update(x, dt), three.update(x, dt));
+                worst = worst.max((y4 + four.last_stage_lead() - y3).abs());
+            }
+            println!("from the mean {from_mean}: largest difference {worst:.2e}");
+            let tolerance = if from_mean { START_SHARE_END } else { 1e-9 };
+            assert!(worst < tolerance, "{worst}");
+        }
+        let mut one = LowPass::new(1.2_f64, 1);
+        one.update(5.0, 0.01);
+        one.update(7.0, 0.01);
+        assert_eq!(one.last_stage_lead(), 0.0);
     }
 
     #[test]

@@ -326,9 +326,12 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         let swinging = self.bank.as_ref().is_some_and(|b| b.force_swings());
         let released = direction == Direction::Still && self.static_friction_share < T::lit(0.01) && !swinging;
         self.seals_n = self.breakaway.update(force, released, (angle_f, rate_f), up_friction_n, dt_s);
+        // A load rising from an empty hook: one filter stage fewer
+        // (crate::static_load, "A lift-off: one stage fewer").
+        let lifting = self.bank.as_ref().is_some_and(|b| b.lifting());
         ChainStep {
             force_n: force_f,
-            force_still_n: force_still_f,
+            force_still_n: if lifting { force_still_f + self.force_still_filter.last_stage_lead() } else { force_still_f },
             angle_deg: angle_f,
             rate_deg_s: rate_f,
             accel_deg_s2: accel_f,
