@@ -1626,15 +1626,20 @@ fn lift_off_in_half_a_second_is_cut_within_1_s_f32() {
 /// the 90 % cases cut, their highest estimated u, every 110 % case not cut
 /// at all).
 fn snatched_lift_offs(precision: Precision) -> (f64, Vec<String>, f64, Vec<String>) {
+    snatched_in(precision, &[0.3])
+}
+
+/// [`snatched_lift_offs`] taken up in each of `take_ups` (s).
+fn snatched_in(precision: Precision, take_ups: &[f64]) -> (f64, Vec<String>, f64, Vec<String>) {
     let (mut worst, mut false_cut, mut peak90, mut uncut) = (0.0f64, Vec::new(), 0.0f64, Vec::new());
-    for angle in [10.0f64, 20.0, 35.0, 65.0, 80.0] {
+    for (angle, &take_up) in [10.0f64, 20.0, 35.0, 65.0, 80.0].into_iter().flat_map(|a| take_ups.iter().map(move |t| (a, t))) {
         let rated = rated_kg(angle.to_radians());
         for rope in ROPES {
             for seals in SEALS {
                 for frac in [0.9, 1.1] {
-                    let sc = Scenario::lift_off(angle, frac * rated, rope, seals, 0.3, 5);
+                    let sc = Scenario::lift_off(angle, frac * rated, rope, seals, take_up, 5);
                     let pts = replay(&sc, precision);
-                    let off = HOLD_BEFORE_S + 0.3;
+                    let off = HOLD_BEFORE_S + take_up;
                     if frac > 1.0 {
                         match pts.iter().find(|p| p.t >= HOLD_BEFORE_S && p.state.cuts()) {
                             Some(p) => {
@@ -1653,23 +1658,23 @@ fn snatched_lift_offs(precision: Precision) -> (f64, Vec<String>, f64, Vec<Strin
             }
         }
     }
-    println!("{precision:?}, lift-offs snatched in 0.3 s: 110 % cut at most {worst:.2} s after leaving the ground; 90 % cut in {} cases {false_cut:?}, highest estimated u {peak90:.4}", false_cut.len());
+    println!("{precision:?}, lift-offs snatched in {take_ups:?} s: 110 % cut at most {worst:.2} s after leaving the ground; 90 % cut in {} cases {false_cut:?}, highest estimated u {peak90:.4}", false_cut.len());
     (worst, false_cut, peak90, uncut)
 }
 
 /// Snatched in 0.3 s, 110 % is cut within 1 s of leaving the ground at
 /// 20°–80° (at 10° at once, by the FAULT of p1 past its range), and 90 % is
-/// never an OVERLOAD and reads at most u 0.99. Measured, f64 and f32: cut at
+/// never an OVERLOAD and reads at most u 0.98. Measured, f64 and f32: cut at
 /// most 0.98 s after, the 3 m rope at 80° the slowest; 90 % at most u
-/// 0.985. Before any move the still force's load reads a load rising
-/// from an empty hook through three of its filter's four stages
-/// (`moment_limiter::static_load`, "A lift-off: one stage fewer"); through
-/// all four, 110 % was cut 0.99–1.12 s after it left the ground and 90 %
-/// read at most 0.970: the four-stage filter alone crosses 0.866 of a step
-/// 0.68 s after a 0.3 s ramp ends, the 0.7 Hz stage against the bounce
-/// (`moment_limiter::static_load`, "A still boom") adds 0.31 s, the 50 ms
-/// debounce the rest. The margin of 90 % is what the stage cost: without
-/// the 0.7 Hz stage a 1.7 Hz bounce of ±68 % reads 90 % as an OVERLOAD.
+/// 0.970. Before any move, for 1.2 s after the hook last read empty, the
+/// still force's load reads a load rising from an empty hook through three
+/// of its filter's four stages (`moment_limiter::static_load`, "A lift-off:
+/// one stage fewer"); through all four, 110 % was cut 0.99–1.12 s after it
+/// left the ground (90 % the same 0.970): the four-stage filter alone
+/// crosses 0.866 of a step 0.68 s after a 0.3 s ramp ends, the 0.7 Hz stage
+/// against the bounce (`moment_limiter::static_load`, "A still boom") adds
+/// 0.31 s, the 50 ms debounce the rest. Without the 0.7 Hz stage a 1.7 Hz
+/// bounce of ±68 % reads 90 % as an OVERLOAD.
 ///
 /// Before the rope bank followed the tip's give in a lift-off
 /// (`moment_limiter::static_load`, "A lift-off: the boom's give swings the
@@ -1685,7 +1690,7 @@ fn lift_off_snatched_in_0_3_s_is_cut_within_1_s(precision: Precision) {
     assert!(uncut.is_empty(), "110 % never cut: {uncut:#?}");
     assert!(worst <= 1.0, "110 % cut {worst:.2} s after it leaves the ground");
     assert!(false_cut.is_empty(), "{false_cut:#?}");
-    assert!(peak90 <= 0.99, "90 % read as u {peak90:.4}");
+    assert!(peak90 <= 0.98, "90 % read as u {peak90:.4}");
 }
 
 #[test]
@@ -1696,6 +1701,49 @@ fn lift_off_snatched_in_0_3_s_is_cut_within_1_s_f64() {
 #[test]
 fn lift_off_snatched_in_0_3_s_is_cut_within_1_s_f32() {
     lift_off_snatched_in_0_3_s_is_cut_within_1_s(Precision::F32);
+}
+
+/// KNOWN GAP, measured (f64 and f32): snatched faster, in 0.1–0.2 s, 110 %
+/// is cut up to 1.14 s after it leaves the ground (at 10°, and at 20° in
+/// 0.1 s, at once by the FAULT of p1 past its range), not within 1 s; and
+/// 90 % snatched in 0.1 s at 20° is an OVERLOAD on the thesis's and the
+/// tip-height ropes (4 of the 40 cases of 90 %; highest estimated u 1.005),
+/// 1.3 s after it leaves the ground. The first crest of so fast a snatch's
+/// bounce pulls up to twice the load and comes through the still force's
+/// filter while a load rising from an empty hook is read through one stage
+/// fewer (`moment_limiter::static_load`, "A lift-off: one stage fewer";
+/// `FAST_LIFT_S`): through four stages throughout, 110 % was cut up to
+/// 1.22 s after and 90 % read at most 0.990, no OVERLOAD. A window of 2 s
+/// instead of 1.2 s read more of the bounce: 90 % an OVERLOAD in 3–8 of 15
+/// `crane-sim synth` lift-offs at 20°–80° taken up in 0.1–0.2 s.
+#[test]
+#[ignore = "KNOWN GAP: snatched in 0.1-0.2 s, 110 % is cut up to 1.14 s after it leaves the ground; 90 % in 0.1 s at 20 deg is an OVERLOAD in 4 of 40"]
+fn lift_off_snatched_in_0_1_to_0_2_s_known_gap() {
+    let (worst, false_cut, _, uncut) = snatched_in(Precision::F64, &[0.1, 0.15, 0.2]);
+    assert!(worst <= 1.0 && false_cut.is_empty() && uncut.is_empty(), "110 % cut {worst:.2} s after; 90 % cut: {false_cut:#?}; 110 % never cut: {uncut:#?}");
+}
+
+/// The known gap above pinned at its measured size: snatched in 0.1–0.2 s,
+/// 110 % is always cut, within 1.15 s of leaving the ground (1.14 s
+/// measured), and 90 % is an OVERLOAD only snatched in 0.1 s at 20°, in at
+/// most 4 cases, reading at most u 1.01 (1.005 measured).
+fn lift_off_snatched_in_0_1_to_0_2_s_stays_as_measured(precision: Precision) {
+    let (worst, false_cut, peak90, uncut) = snatched_in(precision, &[0.1, 0.15, 0.2]);
+    assert!(uncut.is_empty(), "110 % never cut: {uncut:#?}");
+    assert!(worst <= 1.15, "110 % cut {worst:.2} s after it leaves the ground");
+    let other: Vec<&String> = false_cut.iter().filter(|f| !f.starts_with("20->20") || !f.contains("lift 0.1s")).collect();
+    assert!(false_cut.len() <= 4 && other.is_empty(), "{false_cut:#?}");
+    assert!(peak90 <= 1.01, "90 % read as u {peak90:.4}");
+}
+
+#[test]
+fn lift_off_snatched_in_0_1_to_0_2_s_stays_as_measured_f64() {
+    lift_off_snatched_in_0_1_to_0_2_s_stays_as_measured(Precision::F64);
+}
+
+#[test]
+fn lift_off_snatched_in_0_1_to_0_2_s_stays_as_measured_f32() {
+    lift_off_snatched_in_0_1_to_0_2_s_stays_as_measured(Precision::F32);
 }
 
 /// 90 % of rated lifted on the 3 m held rope at 80° (where the swing that
@@ -1719,20 +1767,20 @@ fn ninety_percent_on_a_3_m_rope_at_80_degrees(precision: Precision, take_up: f64
 }
 
 /// 90 % lifted on the 3 m rope at 80°, over 16 noise draws and take-ups of
-/// 0.3 s to 2 s, is never an OVERLOAD and reads at most u 0.97 (measured,
-/// f64 and f32 alike: 0.9609 in 0.3 s, 0.9595 in 0.5 s, 0.9573 in 1 s,
-/// 0.9403 in 2 s; the ×1.05 reading of 90 % is 0.945). Through the still
-/// force's four filter stages, before a load rising from an empty hook was
-/// read through three (`moment_limiter::static_load`, "A lift-off: one
-/// stage fewer"), 0.9486, 0.9485, 0.9481 and 0.9404: the stage fewer passes
-/// more of the bounce, and this test's bound was 0.96. Before the rope bank
+/// 0.3 s to 2 s, is never an OVERLOAD and reads at most u 0.96 (measured,
+/// f64: 0.9504 in 0.3 s, 0.9494 in 0.5 s, 0.9486 in 1 s, 0.9403 in 2 s, f32
+/// within 0.0002; the ×1.05 reading of 90 % is 0.945). Through the still
+/// force's four filter stages throughout, before a load rising from an
+/// empty hook was read through three for 1.2 s (`moment_limiter::static_load`,
+/// "A lift-off: one stage fewer"), 0.9486, 0.9485, 0.9481 and 0.9404; for
+/// 2 s, up to 0.9609. Before the rope bank
 /// followed the tip's give in a lift-off, the swing the take-up starts read
 /// as load at its outward crest: an OVERLOAD in all 16 draws taken up in
 /// 0.3 s (highest u 1.0035), in 8 in 0.5 s (1.0028), and 0.9958 in 1 s.
 fn ninety_percent_lifted_on_a_3_m_rope_at_80_degrees_is_no_overload(precision: Precision) {
     for take_up in [0.3, 0.5, 1.0, 2.0] {
         let (cut, peak) = ninety_percent_on_a_3_m_rope_at_80_degrees(precision, take_up);
-        assert!(cut == 0 && peak <= 0.97, "taken up in {take_up} s: {cut} OVERLOADs, highest u {peak:.4}");
+        assert!(cut == 0 && peak <= 0.96, "taken up in {take_up} s: {cut} OVERLOADs, highest u {peak:.4}");
     }
 }
 
@@ -1893,21 +1941,21 @@ fn lift_off_against_an_ideal_bounce_f32() {
 
 /// The same taken up in 0.5 s and 0.3 s, where the filters that keep a
 /// 1 Hz bounce out cannot also tell 90 % from 110 % within a second. A
-/// bounce of 1 Hz reads 90 % as an OVERLOAD in 11 of its 12 cases (peak
-/// estimated u up to 1.068 taken up in 0.5 s, 1.112 in 0.3 s: its first
+/// bounce of 1 Hz reads 90 % as an OVERLOAD in 10 of its 12 cases (peak
+/// estimated u up to 1.040 taken up in 0.5 s, 1.078 in 0.3 s: its first
 /// crest pulls up to twice the load, and the filters pass a fifth of
 /// 1 Hz); 8 of 12 (up to 1.038 and 1.071) through the still force's four
-/// filter stages, before a load rising from an empty hook was read through
-/// three (`moment_limiter::static_load`, "A lift-off: one stage fewer"),
-/// and all 12 before the rope bank followed the tip's give in a lift-off,
-/// whose swing, which this world's force does not have, lowers the lowest
-/// rope's reading. At 1.5–2 Hz, 90 % reads at most u 0.992 (0.3 s) and
-/// 0.963 (0.5 s), and 110 % is cut within 0.99 s (0.97–1.08 s in 0.3 s
-/// through four stages). In the asserted cases
+/// filter stages throughout, before a load rising from an empty hook was
+/// read through three (`moment_limiter::static_load`, "A lift-off: one
+/// stage fewer"), and all 12 before the rope bank followed the tip's give
+/// in a lift-off, whose swing, which this world's force does not have,
+/// lowers the lowest rope's reading. At 1.5–2 Hz, 90 % reads at most u
+/// 0.992 (0.3 s) and 0.964 (0.5 s), and 110 % is cut within 0.99 s
+/// (0.97–1.08 s in 0.3 s through four stages). In the asserted cases
 /// (`lift_off_against_an_ideal_bounce_*`, 0.8 s and slower) 90 % reads at
-/// most 0.989 (0.977 through four stages) and 110 % is cut within 0.69 s.
+/// most 0.977 and 110 % is cut within 0.69 s (0.84 s through four stages).
 #[test]
-#[ignore = "KNOWN GAP: a lift-off snatched in 0.5 s or less against a bounce of 1 Hz: 90 % is an OVERLOAD in 11 of 12 cases"]
+#[ignore = "KNOWN GAP: a lift-off snatched in 0.5 s or less against a bounce of 1 Hz: 90 % is an OVERLOAD in 10 of 12 cases"]
 fn lift_off_snatched_against_an_ideal_bounce_known_gap() {
     let (failures, _) = lift_off_against_an_ideal_bounce(Precision::F64, &[0.3, 0.5]);
     assert!(failures.is_empty(), "{failures:#?}");
@@ -3899,10 +3947,10 @@ fn paid_out_to_another_clearance_keeps_the_bounds() {
 /// 1.005–1.014/1.037–1.044/1.056–1.071 (0.02 s and 0.1 s measured alike).
 /// What the lag does cost is a lift-off's time (`lift_offs_over` at 20°, 50°
 /// and 80°, every rope, both friction laws): behind 0.05 s, 110 % taken up in
-/// 2 s, 1 s and 0.5 s is cut up to 0.49 s, 0.74 s and 0.93 s after it leaves
-/// the ground; behind 0.2 s up to 0.68 s, 0.92 s and 1.13 s (all 24 in 0.5 s
-/// after 1 s). Through the still force's four filter stages, before a load
-/// rising from an empty hook was read through three
+/// 2 s, 1 s and 0.5 s is cut up to 0.64 s, 0.74 s and 0.93 s after it leaves
+/// the ground; behind 0.2 s up to 0.84 s, 0.99 s and 1.13 s (all 24 in 0.5 s
+/// after 1 s). Through the still force's four filter stages throughout,
+/// before a load rising from an empty hook was read through three
 /// (`moment_limiter::static_load`, "A lift-off: one stage fewer"): 0.65 s,
 /// 0.88 s and 1.08 s (6 of 24 after 1 s), and 0.85 s, 1.07 s (14 of 24) and
 /// 1.27 s.
@@ -4260,3 +4308,4 @@ fn hard_hoist_starts_and_stops_stay_as_measured() {
     assert!(hard.cut90.len() <= 6 && hard.peak85 <= 0.99, "90 % cut in {}; 85 % read u {:.3}", hard.cut90.len(), hard.peak85);
     assert!(m[0] >= 1.0 && r[0] >= 1.0 && m[2] <= 1.12 && r[2] <= 1.12, "hoisting {m:?}, at rest after {r:?}");
 }
+

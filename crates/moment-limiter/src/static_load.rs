@@ -343,20 +343,37 @@
 //! ([`crate::filter::LowPass::last_stage_lead`]: the third stage's output,
 //! exactly the filter with one stage fewer, with no state of its own). That
 //! takes 0.13 s out of the delay and passes a 1.7 Hz bounce at 0.19 of its
-//! size instead of 0.11. Measured (`host-sim` tests, f64 and f32): snatched
-//! in 0.3 s, 110 % is cut at most 0.98 s after it leaves the ground, in
-//! 0.5 s at most 0.88 s; 90 % is no OVERLOAD and reads at most u 0.985
-//! (0.970 before), on the 3 m rope at 80° 0.961 (0.949). Against an ideal
-//! bounce (`lift_off_snatched_against_an_ideal_bounce_*`) 110 % is cut
-//! within 0.99 s (1.08 s before), and 90 % behind a 1 Hz bounce, whose first
-//! crest pulls up to twice the load, is an OVERLOAD in 11 of its 12 cases
-//! (8 before): within a second no filter tells that bounce from a load 20 %
-//! heavier. The window leaves out what the fourth stage is kept for
-//! elsewhere. A raise begun as a lift-off taken up in 5 s ends read u 1.008
-//! through three stages (campaign seed 12 #7607, the seals' up-friction
-//! in the force before the angle shows the raise, [`crate::breakaway`]),
-//! and a stop's bounce after a lowering to 10° was cut early (seed 11
-//! #3433); both read as before.
+//! size instead of 0.11.
+//!
+//! The window is short because a step and its bounce arrive at different
+//! times. The hook reads empty (through the lagged four-stage force) until
+//! about 0.45 s into a fast take-up, and a take-up of 0.5 s or less is cut
+//! 0.85–0.95 s after that; the first crest of a snatch's bounce reaches the
+//! still force's stage S about 1.5 s after it. With a window of 2 s the
+//! crest was read through three stages too: 90 % snatched in 0.1–0.2 s was
+//! an OVERLOAD in 3–8 of 15 `crane-sim synth` lift-offs at 20°–80° (every
+//! rope mode; highest estimated u 1.024), where through four stages it read
+//! at most 0.992. With 1.2 s it reads at most 0.999 there, and the cuts of
+//! take-ups from 0.3 s to 1 s are as with 2 s.
+//!
+//! Measured (`host-sim` tests, f64 and f32): snatched in 0.3 s, 110 % is cut
+//! at most 0.98 s after it leaves the ground, in 0.5 s at most 0.88 s; 90 %
+//! is no OVERLOAD and reads at most u 0.970 (as through four stages), on
+//! the 3 m rope at 80° 0.951 (0.949). Snatched in 0.1–0.2 s, 110 % is still
+//! cut up to 1.14 s after (1.22 s through four stages), and 90 % snatched
+//! in 0.1 s at 20° is an OVERLOAD in 4 of 40 cases (u 1.005; 0.990 through
+//! four stages): the first crest of so fast a snatch comes through within
+//! the window (`lift_off_snatched_in_0_1_to_0_2_s_known_gap`). Against an
+//! ideal bounce (`lift_off_snatched_against_an_ideal_bounce_*`) 110 % is
+//! cut within 0.99 s (1.08 s through four stages), and 90 % behind a 1 Hz
+//! bounce, whose first crest pulls up to twice the load, is an OVERLOAD in
+//! 10 of 12 cases (8): within a second no filter tells that bounce from a
+//! load 20 % heavier. The window leaves out what the fourth stage is kept for elsewhere:
+//! through three stages everywhere, a raise begun as a lift-off taken up in
+//! 5 s ends read u 1.008 (campaign seed 12 #7607, the seals' up-friction in
+//! the force before the angle shows the raise, [`crate::breakaway`]), and a
+//! stop's bounce after a lowering to 10° was cut early (seed 11 #3433); both
+//! read as before.
 //!
 //! ## At rest after a move: the force without the lag
 //!
@@ -782,10 +799,11 @@ pub const LIFT_FOLLOWED_TO: f64 = 0.98;
 /// How long after the hook last read empty (the force at factor 1 under
 /// [`load_jump::MIN_AVERAGE_KG`], the boom still) the still force's load is
 /// read through one filter stage fewer, before any move (s; see the module
-/// doc, "A lift-off: one stage fewer"): a take-up of up to 1 s and the 1 s
-/// in which it must be cut. Slower take-ups, and a raise begun as one
-/// ends, read as before.
-pub const FAST_LIFT_S: f64 = 2.0;
+/// doc, "A lift-off: one stage fewer"): a take-up of 0.5 s or less is cut
+/// 0.85–0.95 s after that reading, and the first crest of a snatch's bounce
+/// comes through about 1.5 s after it. Slower take-ups, and a raise begun as
+/// one ends, read as before.
+pub const FAST_LIFT_S: f64 = 1.2;
 
 /// How long the hook must have hung empty (the force at factor 1 within
 /// [`load_jump::MIN_AVERAGE_KG`] of nothing, the boom still) before a rising
