@@ -368,7 +368,9 @@
 //! cut within 0.99 s (1.08 s through four stages), and 90 % behind a 1 Hz
 //! bounce, whose first crest pulls up to twice the load, is an OVERLOAD in
 //! 10 of 12 cases (8): within a second no filter tells that bounce from a
-//! load 20 % heavier. The window leaves out what the fourth stage is kept for elsewhere:
+//! load 20 % heavier.
+//!
+//! The window also leaves out what the fourth stage is kept for elsewhere:
 //! through three stages everywhere, a raise begun as a lift-off taken up in
 //! 5 s ends read u 1.008 (campaign seed 12 #7607, the seals' up-friction in
 //! the force before the angle shows the raise, [`crate::breakaway`]), and a
