@@ -105,7 +105,9 @@ pub struct Measurement<T> {
     /// The same force through the filter only, without the sensor's lag
     /// (N): the force of a still boom, read that much sooner
     /// ([`crate::static_load`], "A still boom: the force without the
-    /// sensor's lag").
+    /// sensor's lag"). While a load rises from an empty hook, through one
+    /// filter stage fewer ([`crate::static_load`], "A lift-off: one stage
+    /// fewer").
     pub force_still_n: T,
     /// Boom angle now (degrees): the filtered reading, pendulum offset
     /// removed, advanced by rate × (sensor lag + filter delay).

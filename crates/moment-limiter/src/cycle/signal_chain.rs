@@ -373,7 +373,8 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
 struct ChainStep<T> {
     /// Filtered piston force (N), through the sensor's lag.
     force_n: T,
-    /// Filtered piston force (N), without the sensor's lag.
+    /// Filtered piston force (N), without the sensor's lag (through one
+    /// stage fewer while a load rises from an empty hook).
     force_still_n: T,
     /// Filtered boom angle (°).
     angle_deg: T,
