@@ -1270,11 +1270,16 @@ fn lowerings_2_to_10_s_after_a_load_added_at_rest() -> (Vec<String>, f64, f64) {
 /// KNOWN GAP, measured (f64): [`lowering_5_s_after_a_load_added_at_rest_soon_after_a_stop`]
 /// with the lowering begun 2–10 s after the take-up instead of 5 s. Cut
 /// late, where nothing has weighed the new load when the lowering starts:
-/// 2 s after, up to true u 1.127; 3 s, 1.116; 4 s, 1.164 (the 3 m and
+/// 2 s after, up to true u 1.081; 3 s, 1.082 (the 6 m rope, and the
+/// thesis's rope with seal friction rated at 30°); 4 s, 1.105 (the 3 m and
 /// 8.9 m ropes, rated at 45°); 7 s, 1.063 (the thesis's rope, seal
-/// friction). Cut early: 6 s after, at 0.887 (the 3 m rope); 7 s, 0.891
-/// (the 8.9 m rope); 8 s, 0.904; 10 s within the bounds (0.923). 4.5–5.5 s
-/// after, within the bounds. When this test was written, 8 s after was cut
+/// friction). Cut early: 6 s after, at 0.887 (the 3 m rope); 7 s, 0.893
+/// (the 8.9 m rope). 4.5–5.5 s, 8 s and 10 s after, within the bounds
+/// ([`lowering_8_or_10_s_after_a_load_added_at_rest`]). Before the averages
+/// took up W_fast in a move that starts from a doubted weighing
+/// (`moment_limiter::static_load`, "A load added at rest that nothing
+/// weighed"), 2–4 s after was cut up to 1.127, 1.116 and 1.164, and 8 s
+/// after early at 0.904. When this test was written, 8 s after was cut
 /// at 0.813 (19 % early) and 10 s at 0.865: the period mean's step read the
 /// load as 1.25 × itself from ratios that climbed bin by bin, a swing out
 /// of phase with the period found, until the ratios had to agree
@@ -1282,19 +1287,51 @@ fn lowerings_2_to_10_s_after_a_load_added_at_rest() -> (Vec<String>, f64, f64) {
 /// swing's midrange 1.2 s after the one before, as until this test, 4.5–6 s
 /// was cut up to 1.13.
 #[test]
-#[ignore = "KNOWN GAP: a lowering past the rated radius 2-10 s after a load added at rest 3 s after a raise to 80 deg is cut late (true u up to 1.164) or early (from 0.887)"]
+#[ignore = "KNOWN GAP: a lowering past the rated radius 2-7 s after a load added at rest 3 s after a raise to 80 deg is cut late (true u up to 1.105) or early (from 0.887)"]
 fn a_lowering_2_to_10_s_after_a_load_added_at_rest_known_gap() {
     let (failures, _, _) = lowerings_2_to_10_s_after_a_load_added_at_rest();
     assert!(failures.is_empty(), "{failures:#?}");
 }
 
 /// The known gap above pinned at its measured size, so that it cannot widen
-/// unseen: no sample of those lowerings at a true u over 1.17 goes uncut
-/// (1.164 measured), and none is cut before true u 0.88 (0.887).
+/// unseen: no sample of those lowerings at a true u over 1.11 goes uncut
+/// (1.105 measured; 1.164 before the averages took up W_fast in a move that
+/// starts from a doubted weighing), and none is cut before true u 0.88
+/// (0.887).
 #[test]
 fn a_lowering_2_to_10_s_after_a_load_added_at_rest_stays_as_measured() {
     let (_, highest_uncut, lowest_onset) = lowerings_2_to_10_s_after_a_load_added_at_rest();
-    assert!(highest_uncut <= 1.17 && lowest_onset >= 0.88, "highest true u not cut {highest_uncut:.3}, lowest OVERLOAD onset {lowest_onset:.3}");
+    assert!(highest_uncut <= 1.11 && lowest_onset >= 0.88, "highest true u not cut {highest_uncut:.3}, lowest OVERLOAD onset {lowest_onset:.3}");
+}
+
+/// [`lowering_5_s_after_a_load_added_at_rest_soon_after_a_stop`] with the
+/// lowering begun 8 s and 10 s after the take-up, once the swing's midrange
+/// or the mean over one swing period has weighed the load added: cut
+/// between true u 1/1.1 and 1.05 and never released over it (measured, f64:
+/// from 0.933 and 0.964). Before the rest's peak of W_fast was forgotten
+/// while those weighed (`moment_limiter::static_load`, "A load added at
+/// rest that nothing weighed"), the move started doubting that weighing:
+/// 8 s after was cut at 0.904, and with the averages taking up W_fast in
+/// such a move, 10 s after at 0.873 (the swing's crest of W_fast on the
+/// 3 m rope at 68°, 1.17 × the load, held by the averages).
+fn lowering_8_or_10_s_after_a_load_added_at_rest(precision: Precision) {
+    let mut failures = Vec::new();
+    for after in [8.0, 10.0] {
+        let (f, _, onset) = lowering_after_a_load_added_at_rest(precision, 3.0, after);
+        println!("{precision:?}, lowered {after} s after the take-up: lowest OVERLOAD onset {onset:.3}, {} failures", f.len());
+        failures.extend(f);
+    }
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
+#[test]
+fn a_lowering_8_or_10_s_after_a_load_added_at_rest_f64() {
+    lowering_8_or_10_s_after_a_load_added_at_rest(Precision::F64);
+}
+
+#[test]
+fn a_lowering_8_or_10_s_after_a_load_added_at_rest_f32() {
+    lowering_8_or_10_s_after_a_load_added_at_rest(Precision::F32);
 }
 
 /// A lowering past the rated radius inched, as an operator does near the

@@ -232,8 +232,10 @@ pub const STEP_PULL: f64 = 1.0;
 /// earlier, steeper one and reads ratios that climb bin by bin. On the
 /// 8.9 m rope 5 s after a load was added at rest, ratios of 1.04, 1.09,
 /// 1.14, … up to 1.41 read the load as 1.25 × itself and a lowering begun
-/// 8 s after the take-up was cut at true u 0.813, now 0.904 (`host-sim`
-/// test `a_lowering_2_to_10_s_after_a_load_added_at_rest_known_gap`). It
+/// 8 s after the take-up was cut at true u 0.813, with this 0.904, and
+/// since the rest's weighing clears the doubt about the move's start
+/// (`crate::static_load`) 0.933 (`host-sim` test
+/// `a_lowering_8_or_10_s_after_a_load_added_at_rest_*`). It
 /// costs a load added to a steady swing up to 0.2 s where the first ratios
 /// spread: 110 % added 14 s after a raise to 80° on the 14.8 m rope is cut
 /// 0.95 s after its take-up instead of 0.75 s, on the paid-out rope after

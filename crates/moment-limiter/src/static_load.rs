@@ -108,6 +108,22 @@
 //!   while the restart held the old load, instead of 1.128–1.133 (`host-sim`
 //!   test `a_lowering_5_s_after_a_load_added_at_rest_soon_after_a_stop_*`;
 //!   since the swing's midrange weighs it, below, within the bounds).
+//!   In such a move the averages also take up W_fast, W̄_k ← max(W̄_k,
+//!   W_fast), whenever every possible rope weighs: restarted no lower than
+//!   the old load, they otherwise climbed to the new one at their own pace
+//!   only, and W_fast, the lowest rope's reading, dips with the ropes' swings
+//!   out of phase (to 0.53 of the load lowering through 55°). Lowered 2–4 s
+//!   after the take-up, before anything weighed the load at rest, those
+//!   lowerings were cut up to true u 1.164; now 1.105 (the known gap in
+//!   `a_lowering_2_to_10_s_after_a_load_added_at_rest_*`: where W_fast at
+//!   rest never passed the old weighing, nothing doubts it). Once the
+//!   swing's midrange or the mean over one swing period weighs the load at
+//!   rest, the rest's peak of W_fast is forgotten: the load is weighed, and a
+//!   peak above that weighing is the swing's crest, not a load nothing
+//!   weighed. Doubting it, a lowering begun 10 s after the take-up on a 3 m
+//!   rope held W_fast's crest at 68° (1.17 × the load) and was cut at true u
+//!   0.873; now from 0.964 (and 8 s after from 0.933, where it was 0.904;
+//!   `a_lowering_8_or_10_s_after_a_load_added_at_rest_*`).
 //!   At rest a hypothesis that cannot weigh keeps its average and votes with
 //!   it (the load swings on; its weighing from the move is the best it has).
 //!
@@ -516,7 +532,7 @@
 //! before a lowering begun 5 s after the 1 s take-up: cut within the bounds
 //! (`a_lowering_5_s_after_a_load_added_at_rest_soon_after_a_stop_*`; 1.13
 //! before [`crate::swing_midrange::HALF_SWING_S`] was 1.0 s), one begun
-//! 2–4 s after is not (cut up to true u 1.164,
+//! 2–4 s after is not (cut up to true u 1.105,
 //! `a_lowering_2_to_10_s_after_a_load_added_at_rest_known_gap`).
 //!
 //! ## Settled, but for the angle's noise
@@ -630,8 +646,9 @@
 //! (`a_lowering_after_a_load_added_at_rest_*`). Added 3 s after the stop,
 //! before the period is known, where no rope follows the swing, the swing's
 //! midrange weighs it 5 s after its take-up (above), not sooner: lowered
-//! 2–4 s after the take-up, that rope is cut up to true u 1.164; and
-//! lowered 6–8 s after, several ropes are cut early, from 0.887
+//! 2–4 s after the take-up, that rope is cut up to true u 1.105 (1.164
+//! before a move that doubts its start took up W_fast, above); and
+//! lowered 6–7 s after, several ropes are cut early, from 0.887
 //! (`a_lowering_2_to_10_s_after_a_load_added_at_rest_known_gap`).
 //!
 //! ## A load set down: the ropes hang still again
@@ -949,13 +966,15 @@ pub struct StaticLoadBank<T> {
     factors_agree: bool,
     /// At the last update the force swung (see [`Self::force_swings`]).
     force_swings: bool,
-    /// The highest W_fast at rest since the last move stopped (kg): a load
-    /// added there that nothing weighed shows in it.
+    /// The highest W_fast at rest since the last move stopped, or since the
+    /// swing's midrange or the period's mean last weighed the load (kg): a
+    /// load added there that nothing weighed shows in it.
     rest_peak_kg: Option<T>,
     /// This move started from a held weighing that W_fast at rest had
     /// passed by [`load_jump::JUMP`]: the rope that was the weighing
-    /// restarts as any other (see the module doc, "A load added at rest
-    /// that nothing weighed").
+    /// restarts as any other, and the averages take up W_fast while every
+    /// rope weighs (see the module doc, "A load added at rest that nothing
+    /// weighed").
     weighing_doubted: bool,
     /// The load the force read at factor 1 at the last
     /// [`update`](Self::update) (kg).
@@ -1554,6 +1573,8 @@ impl<T: Real> StaticLoadBank<T> {
         self.follow_jump(&factors, agree, settle);
         // While every rope agrees, the weighing is W_fast itself: the
         // averages start the next move from it (a lift-off is in them at once).
+        // So too in a move that doubts the weighing it started from, while
+        // every rope weighs: the averages restarted at the old load.
         // Only the hypotheses that weigh now vote: a frozen average is a
         // weighing from before the rope became impossible.
         let mut slow: Option<T> = None;
@@ -1565,7 +1586,7 @@ impl<T: Real> StaticLoadBank<T> {
                 // Both ways: no move has started to dip the force (see the
                 // module doc, "Power-up").
                 h.slow_kg = Some([fast; SLOW_STAGES]);
-            } else if agree || light_raise {
+            } else if agree || light_raise || (doubted && !still && all_weigh) {
                 // Raised to W_fast at once (a lift-off), lowered only at the
                 // averages' pace: the force leads the lagging angle at the
                 // start of a move (its J·θ̈ and ride-down read as a dip of
@@ -1703,6 +1724,10 @@ impl<T: Real> StaticLoadBank<T> {
             }
             _ => load_kg,
         };
+        // Weighed at rest: a peak of W_fast above it is the swing's crest.
+        if mean_weighs || mid_kg.is_some() {
+            self.rest_peak_kg = None;
+        }
         if !self.still {
             self.last_kg = Some(load_kg);
         }
