@@ -334,3 +334,24 @@ fn a_replayed_overload_persists_every_state_change_and_writes_only_in_cut_cycles
         "every state change, in order"
     );
 }
+
+/// The utilization's per mille in the record's top half: truncated toward
+/// zero, clamped to 0..=65 534, 0xFFFF for NaN, the same in f32 (the board,
+/// converted by the FPU) and f64.
+#[test]
+fn the_records_per_mille_truncates_clamps_and_marks_nan() {
+    fn permille<T: crane_model::Real>(u: T) -> u32 {
+        let e = Event::<T> {
+            t: Ticks(0),
+            kind: event_log::EventKind::Entered(LimiterState::Warning, None),
+            boom_angle_deg: None,
+            load_kg: None,
+            utilization: Some(u),
+        };
+        record_of(&e, BOOT, 0).unwrap().value >> 16
+    }
+    for (u, want) in [(0.9999, 999), (0.0004, 0), (-0.5, 0), (65.5339, 65_533), (65.6, 65_534), (1e9, 65_534), (f64::INFINITY, 65_534), (f64::NEG_INFINITY, 0), (f64::NAN, 0xFFFF)] {
+        assert_eq!(permille(u), want, "f64 {u}");
+        assert_eq!(permille(u as f32), want, "f32 {u}");
+    }
+}

@@ -23,6 +23,10 @@ pub trait Real: nalgebra::RealField + Copy {
     /// `vcvt` for `f32`, never through `f64` (soft float on the controller).
     /// Exact below 2²⁴ for `f32`, always for `f64`.
     fn from_count(x: u32) -> Self;
+    /// Converts to a count, toward zero and saturating (NaN gives 0), as
+    /// `as u32` does: the FPU's `vcvt` for `f32`, never through `f64` (soft
+    /// float on the controller).
+    fn to_count(self) -> u32;
 }
 
 impl Real for f64 {
@@ -46,6 +50,10 @@ impl Real for f64 {
     fn from_count(x: u32) -> Self {
         f64::from(x)
     }
+    #[inline(always)]
+    fn to_count(self) -> u32 {
+        self as u32
+    }
 }
 
 impl Real for f32 {
@@ -68,6 +76,10 @@ impl Real for f32 {
     #[inline(always)]
     fn from_count(x: u32) -> Self {
         x as f32
+    }
+    #[inline(always)]
+    fn to_count(self) -> u32 {
+        self as u32
     }
 }
 
