@@ -4345,4 +4345,3 @@ fn hard_hoist_starts_and_stops_stay_as_measured() {
     assert!(hard.cut90.len() <= 6 && hard.peak85 <= 0.99, "90 % cut in {}; 85 % read u {:.3}", hard.cut90.len(), hard.peak85);
     assert!(m[0] >= 1.0 && r[0] >= 1.0 && m[2] <= 1.12 && r[2] <= 1.12, "hoisting {m:?}, at rest after {r:?}");
 }
-

@@ -1571,10 +1571,15 @@ impl<T: Real> StaticLoadBank<T> {
             self.rest_peak_kg = Some(self.rest_peak_kg.map_or(fast, |p| p.max(fast)));
         }
         self.follow_jump(&factors, agree, settle);
+        // A move that doubts the weighing it started from: while every
+        // rope weighs, the averages, restarted at the old load, take up
+        // W_fast (raised only; in motion only the ropes that weigh have
+        // one).
+        if doubted && !still && all_weigh {
+            self.raise_averages(fast);
+        }
         // While every rope agrees, the weighing is W_fast itself: the
         // averages start the next move from it (a lift-off is in them at once).
-        // So too in a move that doubts the weighing it started from, while
-        // every rope weighs: the averages restarted at the old load.
         // Only the hypotheses that weigh now vote: a frozen average is a
         // weighing from before the rope became impossible.
         let mut slow: Option<T> = None;
@@ -1586,7 +1591,7 @@ impl<T: Real> StaticLoadBank<T> {
                 // Both ways: no move has started to dip the force (see the
                 // module doc, "Power-up").
                 h.slow_kg = Some([fast; SLOW_STAGES]);
-            } else if agree || light_raise || (doubted && !still && all_weigh) {
+            } else if agree || light_raise {
                 // Raised to W_fast at once (a lift-off), lowered only at the
                 // averages' pace: the force leads the lagging angle at the
                 // start of a move (its J·θ̈ and ride-down read as a dip of
