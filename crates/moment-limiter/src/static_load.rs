@@ -112,7 +112,8 @@
 //!   W_fast), whenever every possible rope weighs: restarted no lower than
 //!   the old load, they otherwise climbed to the new one at their own pace
 //!   only, and W_fast, the lowest rope's reading, dips with the ropes' swings
-//!   out of phase (to 0.53 of the load lowering through 55°). Lowered 2–4 s
+//!   out of phase (to 0.53 of the load at 51°, lowering from 80° on the
+//!   8.9 m rope). Lowered 2–4 s
 //!   after the take-up, before anything weighed the load at rest, those
 //!   lowerings were cut up to true u 1.164; now 1.105 (the known gap in
 //!   `a_lowering_2_to_10_s_after_a_load_added_at_rest_*`: where W_fast at
