@@ -262,6 +262,12 @@ impl<T: Real> LowPass<T> {
         self.stages.and_then(|st| st.get(last).copied())
     }
 
+    /// The first stage's output, if any sample has been fed: the filter
+    /// with one stage, which shows a turn of its input soonest.
+    pub fn first_stage(&self) -> Option<T> {
+        self.stages.and_then(|st| st.first().copied())
+    }
+
     /// How far the output of the stage before the last leads the output:
     /// added to the output, the same filter with one stage fewer, at no cost
     /// (the stages are in series). 0 before the first sample or with a

@@ -328,7 +328,13 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         self.seals_n = self.breakaway.update(force, released, (angle_f, rate_f), up_friction_n, dt_s);
         // A load rising from an empty hook: one filter stage fewer
         // (crate::static_load, "A lift-off: one stage fewer").
-        let lifting = self.bank.as_ref().is_some_and(|b| b.lifting());
+        let lifting = match self.bank.as_mut() {
+            Some(b) => {
+                b.watch_lift(self.force_still_filter.first_stage());
+                b.lifting()
+            }
+            None => false,
+        };
         ChainStep {
             force_n: force_f,
             force_still_n: if lifting { force_still_f + self.force_still_filter.last_stage_lead() } else { force_still_f },
