@@ -445,7 +445,8 @@
 //! the slowest of every rope taken up in 1–2 s at 10°–80° is 0.68–0.69 s,
 //! as before), and behind an ideal bounce of 2 Hz that small, 90 % taken
 //! up in 0.5 s reads up to 0.013 higher (0.952 at 80°, was 0.939; the
-//! highest of those cases, 0.977, is unchanged).
+//! highest behind 1.5–2 Hz in 0.5 s, 0.964, and behind 1–2 Hz in 0.8–2 s,
+//! 0.977, are unchanged).
 //! Switched on 3 s after a raise to 80° with the 3 m rope swinging, a case
 //! already cut for its swing (the known gap "switched on while the load
 //! swings"), the reading's highest rose from 3.04 to 3.09 × the load and its
