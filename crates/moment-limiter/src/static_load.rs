@@ -1276,7 +1276,8 @@ impl<T: Real> StaticLoadBank<T> {
     pub fn watch_lift(&mut self, first_stage_n: Option<T>) {
         let Some(f) = first_stage_n else { return };
         if self.light_s > T::lit(0.0) {
-            // The hook reads empty: the force a lift rises from.
+            // The hook reads empty: the force a lift rises from, its lowest
+            // over this empty spell (a spell after a lift starts afresh).
             self.lift_base_n = Some(match (self.lift_peak_n, self.lift_base_n) {
                 (None, Some(b)) => b.min(f),
                 _ => f,
@@ -1286,6 +1287,9 @@ impl<T: Real> StaticLoadBank<T> {
         } else if self.lifting() {
             let peak = self.lift_peak_n.map_or(f, |p| p.max(f));
             self.lift_peak_n = Some(peak);
+            // A force that never rose above the empty hook's (peak ≤ base)
+            // counts as turned: read through the stage against the bounce,
+            // as before this watch.
             if let Some(base) = self.lift_base_n {
                 self.lift_bounced |= peak - f >= T::lit(LIFT_TURN) * (peak - base);
             }
