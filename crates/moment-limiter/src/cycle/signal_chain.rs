@@ -330,7 +330,7 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         // (crate::static_load, "A lift-off: one stage fewer").
         let lifting = match self.bank.as_mut() {
             Some(b) => {
-                b.watch_lift(self.force_still_filter.first_stage());
+                b.watch_lift(self.force_still_filter.first_stage().map(|f| f - cal.force_offset_n - self.seals_n));
                 b.lifting()
             }
             None => false,
