@@ -1621,7 +1621,8 @@ fn lift_offs_on(precision: Precision, angles: &[f64], take_ups: &[f64], ropes: &
 
 /// Lift-offs at 10°, 20°, 35°, 65° and 80°, taken up in 1 s and 2 s: 90 %
 /// never cut, 110 % within 1 s of leaving the ground (measured, f64: at
-/// most 0.84 s; 0.86 s before the rope bank followed the tip's give).
+/// most 0.63 s; 0.68 s before the mean of a bouncing lift-off's ring was
+/// read, `moment_limiter::static_load`, "A lift-off: the mean of its ring").
 #[test]
 fn lift_off_at_other_angles() {
     let (failures, _) = lift_offs_over(Precision::F64, &[10.0, 20.0, 35.0, 65.0, 80.0], &[1.0, 2.0]);
@@ -1630,7 +1631,9 @@ fn lift_off_at_other_angles() {
 
 /// Lift-offs taken up in 0.5 s at 10°–80°, every rope, both friction laws:
 /// 90 % never cut, 110 % within 1 s of leaving the ground (measured, f64 and
-/// f32: at most 0.87 s, the 3 m rope at 80°). The boom bends under the load
+/// f32: at most 0.76 s; 0.87 s, the 3 m rope at 80°, before the mean of a
+/// bouncing lift-off's ring was read, `moment_limiter::static_load`, "A
+/// lift-off: the mean of its ring"). The boom bends under the load
 /// as it is taken up, its tip moves out, and a 3 m rope at a steep boom is
 /// left swinging inward by up to 0.9° (tan 80° · tan 0.9° = 9 % less
 /// pull). The rope bank follows that swing (`moment_limiter::static_load`,
@@ -1704,8 +1707,9 @@ fn snatched_in(precision: Precision, take_ups: &[f64]) -> (f64, Vec<String>, f64
 /// Snatched in 0.3 s, 110 % is cut within 1 s of leaving the ground at
 /// 20°–80° (at 10° at once, by the FAULT of p1 past its range), and 90 % is
 /// never an OVERLOAD and reads at most u 0.98. Measured, f64 and f32: cut at
-/// most 0.98 s after, the 3 m rope at 80° the slowest; 90 % at most u
-/// 0.970. Before any move, for 1.2 s after the hook last read empty, the
+/// most 0.97 s after, the 3 m rope at 35° the slowest (0.98 s, at 80°,
+/// before the mean of the bounce's ring was read: `moment_limiter::static_load`,
+/// "A lift-off: the mean of its ring"); 90 % at most u 0.970. Before any move, for 1.2 s after the hook last read empty, the
 /// still force's load reads a load rising from an empty hook through three
 /// of its filter's four stages (`moment_limiter::static_load`, "A lift-off:
 /// one stage fewer"); through all four, 110 % was cut 0.99–1.12 s after it
@@ -1742,47 +1746,56 @@ fn lift_off_snatched_in_0_3_s_is_cut_within_1_s_f32() {
     lift_off_snatched_in_0_3_s_is_cut_within_1_s(Precision::F32);
 }
 
-/// KNOWN GAP, measured (f64 and f32): snatched faster, in 0.1–0.2 s, 110 %
-/// is cut up to 1.14 s after it leaves the ground (at 10°, and at 20° in
-/// 0.1 s, at once by the FAULT of p1 past its range), not within 1 s; and
-/// 90 % snatched in 0.1 s at 20° is an OVERLOAD on the thesis's and the
-/// tip-height ropes (4 of the 40 cases of 90 %; highest estimated u 1.005),
-/// 1.3 s after it leaves the ground. The first crest of so fast a snatch's
-/// bounce pulls up to twice the load and comes through the still force's
-/// filter while a load rising from an empty hook is read through one stage
-/// fewer (`moment_limiter::static_load`, "A lift-off: one stage fewer";
-/// `FAST_LIFT_S`): through four stages throughout, 110 % was cut up to
-/// 1.22 s after and 90 % read at most 0.990, no OVERLOAD. A window of 2 s
-/// instead of 1.2 s read more of the bounce: 90 % an OVERLOAD in 3–8 of 15
-/// `crane-sim synth` lift-offs at 20°–80° taken up in 0.1–0.2 s.
+/// KNOWN GAP, measured (f64 and f32): 90 % snatched in 0.1 s at 20° is an
+/// OVERLOAD on the thesis's and the tip-height ropes (4 of the 40 cases of
+/// 90 % snatched in 0.1–0.2 s; highest estimated u 1.005), 1.3 s after it
+/// leaves the ground. The first crest of so fast a snatch's bounce pulls up
+/// to twice the load, and the stage against the bounce carries its second
+/// crest into the reading; the first comes through within the window in
+/// which a load rising from an empty hook is read through one stage fewer
+/// (`moment_limiter::static_load`, "A lift-off: one stage fewer";
+/// `FAST_LIFT_S`): through four stages throughout, 90 % read at most 0.990,
+/// no OVERLOAD, but 110 % was cut up to 1.22 s after. A window of 2 s instead of 1.2 s read more of
+/// the bounce: 90 % an OVERLOAD in 3–8 of 15 `crane-sim synth` lift-offs
+/// at 20°–80° taken up in 0.1–0.2 s. The mean of the ring
+/// ("A lift-off: the mean of its ring") reads this case at 0.905 and 0.992
+/// of the load within the window; it raises the reading, never lowers it.
 #[test]
-#[ignore = "KNOWN GAP: snatched in 0.1-0.2 s, 110 % is cut up to 1.14 s after it leaves the ground; 90 % in 0.1 s at 20 deg is an OVERLOAD in 4 of 40"]
+#[ignore = "KNOWN GAP: snatched in 0.1 s at 20 deg, 90 % is an OVERLOAD in 4 of 40 cases (u 1.005)"]
 fn lift_off_snatched_in_0_1_to_0_2_s_known_gap() {
-    let (worst, false_cut, _, uncut) = snatched_in(Precision::F64, &[0.1, 0.15, 0.2]);
-    assert!(worst <= 1.0 && false_cut.is_empty() && uncut.is_empty(), "110 % cut {worst:.2} s after; 90 % cut: {false_cut:#?}; 110 % never cut: {uncut:#?}");
+    let (_, false_cut, _, _) = snatched_in(Precision::F64, &[0.1, 0.15, 0.2]);
+    assert!(false_cut.is_empty(), "90 % cut: {false_cut:#?}");
 }
 
-/// The known gap above pinned at its measured size: snatched in 0.1–0.2 s,
-/// 110 % is always cut, within 1.15 s of leaving the ground (1.14 s
-/// measured), and 90 % is an OVERLOAD only snatched in 0.1 s at 20°, in at
-/// most 4 cases, reading at most u 1.01 (1.005 measured).
-fn lift_off_snatched_in_0_1_to_0_2_s_stays_as_measured(precision: Precision) {
+/// Snatched faster, in 0.1–0.2 s: 110 % is cut within 1 s of leaving the
+/// ground (at 10°, and at 20° in 0.1 s, at once by the FAULT of p1 past its
+/// range). Measured, f64 and f32: at most 0.87 s after, since the mean of
+/// the bounce's ring is read from three of its turning points
+/// (`moment_limiter::static_load`, "A lift-off: the mean of its ring").
+/// Before, the stage against the bounce carried the ring's troughs into the
+/// reading: cut up to 1.14 s after (the 3 m rope at 35°; 1.22 s through the
+/// still force's four filter stages throughout).
+///
+/// And the known gap above pinned at its measured size (one run of the
+/// lift-offs for both): 90 % is an OVERLOAD only snatched in 0.1 s at 20°,
+/// in at most 4 cases, reading at most u 1.01 (1.005 measured).
+fn lift_off_snatched_in_0_1_to_0_2_s(precision: Precision) {
     let (worst, false_cut, peak90, uncut) = snatched_in(precision, &[0.1, 0.15, 0.2]);
     assert!(uncut.is_empty(), "110 % never cut: {uncut:#?}");
-    assert!(worst <= 1.15, "110 % cut {worst:.2} s after it leaves the ground");
+    assert!(worst <= 1.0, "110 % cut {worst:.2} s after it leaves the ground");
     let other: Vec<&String> = false_cut.iter().filter(|f| !f.starts_with("20->20") || !f.contains("lift 0.1s")).collect();
     assert!(false_cut.len() <= 4 && other.is_empty(), "{false_cut:#?}");
     assert!(peak90 <= 1.01, "90 % read as u {peak90:.4}");
 }
 
 #[test]
-fn lift_off_snatched_in_0_1_to_0_2_s_stays_as_measured_f64() {
-    lift_off_snatched_in_0_1_to_0_2_s_stays_as_measured(Precision::F64);
+fn lift_off_snatched_in_0_1_to_0_2_s_is_cut_within_1_s_and_90_percent_stays_as_measured_f64() {
+    lift_off_snatched_in_0_1_to_0_2_s(Precision::F64);
 }
 
 #[test]
-fn lift_off_snatched_in_0_1_to_0_2_s_stays_as_measured_f32() {
-    lift_off_snatched_in_0_1_to_0_2_s_stays_as_measured(Precision::F32);
+fn lift_off_snatched_in_0_1_to_0_2_s_is_cut_within_1_s_and_90_percent_stays_as_measured_f32() {
+    lift_off_snatched_in_0_1_to_0_2_s(Precision::F32);
 }
 
 /// 90 % of rated lifted on the 3 m held rope at 80° (where the swing that
@@ -1991,10 +2004,12 @@ fn lift_off_against_an_ideal_bounce_f32() {
 /// stage fewer"), and all 12 before the rope bank followed the tip's give
 /// in a lift-off, whose swing, which this world's force does not have,
 /// lowers the lowest rope's reading. At 1.5–2 Hz, 90 % reads at most u
-/// 0.992 (0.3 s) and 0.964 (0.5 s), and 110 % is cut within 0.99 s
-/// (0.97–1.08 s in 0.3 s through four stages). In the asserted cases
-/// (`lift_off_against_an_ideal_bounce_*`, 0.8 s and slower) 90 % reads at
-/// most 0.977 and 110 % is cut within 0.69 s (0.84 s through four stages).
+/// 0.992 (0.3 s) and 0.964 (0.5 s), and 110 % is cut within 0.74 s (0.99 s
+/// before the mean of the bounce's ring was read, `moment_limiter::static_load`,
+/// "A lift-off: the mean of its ring"; 0.97–1.08 s in 0.3 s through four
+/// stages). In the asserted cases (`lift_off_against_an_ideal_bounce_*`,
+/// 0.8 s and slower) 90 % reads at most 0.977 and 110 % is cut within 0.65 s
+/// (0.69 s before the ring's mean, 0.84 s through four stages).
 #[test]
 #[ignore = "KNOWN GAP: a lift-off snatched in 0.5 s or less against a bounce of 1 Hz: 90 % is an OVERLOAD in 10 of 12 cases"]
 fn lift_off_snatched_against_an_ideal_bounce_known_gap() {
@@ -2004,8 +2019,9 @@ fn lift_off_snatched_against_an_ideal_bounce_known_gap() {
 
 /// The known gap above pinned at its measured size: snatched in 0.3 s or
 /// 0.5 s against an ideal bounce of 1–2 Hz, 110 % is cut within 1 s of
-/// leaving the ground (measured, f64: at most 0.99 s), and 90 % is an
-/// OVERLOAD only behind the 1 Hz bounce (the gap).
+/// leaving the ground (measured, f64: at most 0.74 s; 0.99 s before the
+/// ring's mean was read), and 90 % is an OVERLOAD only behind the 1 Hz
+/// bounce (the gap).
 #[test]
 fn lift_off_snatched_against_an_ideal_bounce_is_cut_within_1_s() {
     let (failures, worst) = lift_off_against_an_ideal_bounce(Precision::F64, &[0.3, 0.5]);
@@ -3928,8 +3944,9 @@ fn a_bounce_on_the_rope_keeps_the_bounds_f32() {
 /// Measured: the highest estimated u at 85 % 0.914 (f64 and f32), the
 /// lowerings cut at true u 0.952–0.979 (f32 0.952–0.978); the lift-offs cut
 /// within 0.84 s (1 s) and 0.60 s (2 s), 90 % read at most u 0.944 (f64).
-/// Taken up in 0.5 s at 65° and 80°, 110 % is cut within 0.87 s (f64 and
-/// f32), 90 % never; through the still force's four filter stages, before
+/// Taken up in 0.5 s at 65° and 80°, 110 % is cut within 0.72 s (f64 and
+/// f32; 0.86 s before the mean of a bouncing lift-off's ring was read), 90 %
+/// never; through the still force's four filter stages, before
 /// a load rising from an empty hook was read through three
 /// (`moment_limiter::static_load`, "A lift-off: one stage fewer"), up to
 /// 1.02 s after, as on the bank's own lengths.
