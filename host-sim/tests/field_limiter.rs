@@ -1798,6 +1798,52 @@ fn lift_off_snatched_in_0_1_to_0_2_s_is_cut_within_1_s_and_90_percent_stays_as_m
     lift_off_snatched_in_0_1_to_0_2_s(Precision::F32);
 }
 
+/// [`snatched_in`] on a boom 30 % softer than the limiter's model (Young's
+/// modulus 0.7 of it: the bounce slower, about 1.2 Hz at 20°, and the ring
+/// deeper), with its own calibration.
+fn snatched_on_a_softer_boom(take_ups: &[f64]) -> (f64, Vec<String>, f64, Vec<String>) {
+    let mut got = (0.0, Vec::new(), 0.0, Vec::new());
+    with_setting(&BOOM_FACTORS, (0.7, 1.0), || got = snatched_in(Precision::F64, take_ups));
+    got
+}
+
+/// KNOWN GAP, measured (f64): on a boom 30 % softer than the model, 90 %
+/// snatched in 0.3 s is an OVERLOAD in 24 of 40 cases (every rope at 10°,
+/// 20° and 35°; highest estimated u 1.029), in 0.1 s in 18 of 40 (20°,
+/// 35° and the 3 m rope at 65°; u 1.070); taken up in 0.5 s, 1 s or 2 s in
+/// none (at most u 0.976). Its ring is
+/// slower than the stage against the bounce was set for: at 20° the force
+/// rings from 0.6 to 1.4 × the load at 1.2 Hz, the ring's mean is read at
+/// 0.996 of the load 1.1 s after it leaves the ground
+/// (`moment_limiter::static_load`, "A lift-off: the mean of its ring"), and
+/// the stage carries the second crest to 1.09 × the load 0.25 s later. The
+/// same before the ring's mean was read (it only raises the reading): this
+/// is no new behaviour, found testing the snatch on other booms. 110 % is
+/// cut within 0.99 s (0.1 s; 1.07 s before the ring's mean) and 0.93 s
+/// (0.3 s). With the model's boom, or its damping 0.3 of the model's (the
+/// ring longer), 90 % snatched in 0.3 s is never an OVERLOAD (at most u
+/// 0.975); snatched in 0.1 s, 4 of 40 (the known gap of
+/// [`lift_off_snatched_in_0_1_to_0_2_s_known_gap`]) and 12 of 40 (u 1.010).
+/// Measured with `BOOM_FACTORS` and [`snatched_in`], 0.1–2 s.
+#[test]
+#[ignore = "KNOWN GAP: on a boom 30 % softer than the model, 90 % snatched in 0.1-0.3 s is an OVERLOAD in 18-24 of 40 cases (u up to 1.070)"]
+fn lift_off_snatched_on_a_softer_boom_known_gap() {
+    let (worst, false_cut, _, uncut) = snatched_on_a_softer_boom(&[0.1, 0.3]);
+    assert!(worst <= 1.0 && false_cut.is_empty() && uncut.is_empty(), "110 % cut {worst:.2} s after; 90 % cut: {false_cut:#?}; 110 % never cut: {uncut:#?}");
+}
+
+/// The known gap above pinned at its measured size, snatched in 0.3 s: 110 %
+/// is cut within 1 s of leaving the ground (0.93 s measured), and 90 % is
+/// an OVERLOAD in at most 24 of 40 cases, at 10°–35° only, reading at most
+/// u 1.035 (1.029 measured).
+#[test]
+fn lift_off_snatched_on_a_softer_boom_stays_as_measured() {
+    let (worst, false_cut, peak90, uncut) = snatched_on_a_softer_boom(&[0.3]);
+    assert!(uncut.is_empty() && worst <= 1.0, "110 % cut {worst:.2} s after; never cut: {uncut:#?}");
+    let other: Vec<&String> = false_cut.iter().filter(|f| !(f.starts_with("10->") || f.starts_with("20->") || f.starts_with("35->"))).collect();
+    assert!(false_cut.len() <= 24 && other.is_empty() && peak90 <= 1.035, "90 % read as u {peak90:.4}, cut: {false_cut:#?}");
+}
+
 /// 90 % of rated lifted on the 3 m held rope at 80° (where the swing that
 /// the boom's give starts pulls most, see
 /// [`lift_off_snatched_in_0_3_s_is_cut_within_1_s`]), taken up in `take_up` s,
@@ -4399,3 +4445,4 @@ fn hard_hoist_starts_and_stops_stay_as_measured() {
     assert!(hard.cut90.len() <= 6 && hard.peak85 <= 0.99, "90 % cut in {}; 85 % read u {:.3}", hard.cut90.len(), hard.peak85);
     assert!(m[0] >= 1.0 && r[0] >= 1.0 && m[2] <= 1.12 && r[2] <= 1.12, "hoisting {m:?}, at rest after {r:?}");
 }
+
