@@ -1824,6 +1824,10 @@ fn snatched_on_a_softer_boom(take_ups: &[f64]) -> (f64, Vec<String>, f64, Vec<St
 /// ring longer), 90 % snatched in 0.3 s is never an OVERLOAD (at most u
 /// 0.975); snatched in 0.1 s, 4 of 40 (the known gap of
 /// [`lift_off_snatched_in_0_1_to_0_2_s_known_gap`]) and 12 of 40 (u 1.010).
+/// How the gap grows as the boom softens, 90 % snatched in 0.1 s / 0.3 s:
+/// Young's modulus 1.3 of the model's, none (u 0.972 / 0.956); 1.0, 4 of 40
+/// (1.005) / none (0.970); 0.9, 16 of 40 (1.024) / none (0.983); 0.8, 18 of
+/// 40 (1.045) / 2 of 40 (1.003); 0.7, 18 / 24 of 40 (1.070 / 1.029).
 /// Measured with `BOOM_FACTORS` and [`snatched_in`], 0.1–2 s.
 #[test]
 #[ignore = "KNOWN GAP: on a boom 30 % softer than the model, 90 % snatched in 0.1-0.3 s is an OVERLOAD in 18-24 of 40 cases (u up to 1.070)"]
