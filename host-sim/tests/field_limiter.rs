@@ -1802,9 +1802,7 @@ fn lift_off_snatched_in_0_1_to_0_2_s_is_cut_within_1_s_and_90_percent_stays_as_m
 /// modulus 0.7 of it: the bounce slower, about 1.2 Hz at 20°, and the ring
 /// deeper), with its own calibration.
 fn snatched_on_a_softer_boom(take_ups: &[f64]) -> (f64, Vec<String>, f64, Vec<String>) {
-    let mut got = (0.0, Vec::new(), 0.0, Vec::new());
-    with_setting(&BOOM_FACTORS, (0.7, 1.0), || got = snatched_in(Precision::F64, take_ups));
-    got
+    with_setting(&BOOM_FACTORS, (0.7, 1.0), || snatched_in(Precision::F64, take_ups))
 }
 
 /// KNOWN GAP, measured (f64): on a boom 30 % softer than the model, 90 %
@@ -2080,11 +2078,13 @@ fn lift_off_snatched_against_an_ideal_bounce_is_cut_within_1_s() {
     assert!(worst <= 1.0, "110 % cut {worst:.2} s after it leaves the ground");
 }
 
-/// Runs `f` with this thread's `setting` at `value`, then as before.
-fn with_setting<V: Copy>(setting: &'static std::thread::LocalKey<std::cell::Cell<V>>, value: V, f: impl FnOnce()) {
+/// Runs `f` with this thread's `setting` at `value`, then sets it as
+/// before; returns what `f` returns.
+fn with_setting<V: Copy, R>(setting: &'static std::thread::LocalKey<std::cell::Cell<V>>, value: V, f: impl FnOnce() -> R) -> R {
     let before = setting.with(|c| c.replace(value));
-    f();
+    let got = f();
     setting.with(|c| c.set(before));
+    got
 }
 
 /// Runs `f` on this thread with the angle sensor a first-order lag of
@@ -3830,13 +3830,11 @@ fn a_load_added_at_rest_with_stuck_seals_or_angle_noise_is_cut_within_4_s() {
 /// follows the swing ([`ADDED_SEEN`], over 6 s) and where none does
 /// ([`ADDED_GAP`], over 20 s), behind `noise_deg` of angle noise (f64).
 fn loads_added_at_rest_behind_angle_noise(noise_deg: f64) -> (AddedAtRestWorst, AddedAtRestWorst) {
-    let mut worst = None;
-    with_setting(&NOISE_DEG, Some(noise_deg), || {
+    let (seen, gap) = with_setting(&NOISE_DEG, Some(noise_deg), || {
         let seen = load_added_at_rest_after_a_move_measured(Precision::F64, &ADDED_SEEN, 6.0).1;
         let gap = load_added_at_rest_after_a_move_measured(Precision::F64, &ADDED_GAP, 20.0).1;
-        worst = Some((seen, gap));
+        (seen, gap)
     });
-    let (seen, gap) = worst.expect("measured");
     println!("{noise_deg} deg of angle noise: where a rope follows {seen:?}; where none does {gap:?}");
     (seen, gap)
 }
@@ -3930,16 +3928,16 @@ const HELD_ROPES: [Rope; 3] = [Rope::Held(0.0), Rope::Held(0.5), Rope::Held(1.0)
 /// more not cut), held ropes, both friction laws. Returns (failures of the
 /// 85 % moves, highest estimated u there, lowering failures, lowest onset u).
 fn bounds_against_a_rope_bounce(precision: Precision, hz: f64, zeta: f64) -> (Vec<String>, f64, Vec<String>, f64) {
-    let mut out = (Vec::new(), 0.0f64, Vec::new(), f64::INFINITY);
-    with_setting(&ROPE_BOUNCE, Some((hz, zeta)), || {
+    let mut out = with_setting(&ROPE_BOUNCE, Some((hz, zeta)), || {
         // The thesis's moves, and the same with the ramps of a hard start
         // and stop (0.5 s, the campaign's shortest), which excite a 1 Hz
         // bounce most (a 1 s linear ramp does not excite 1 Hz at all).
         let hard = thesis_moves().into_iter().map(|(a, b, dur, _, shape)| (a, b, dur, 0.5, shape));
         let moves = thesis_moves().into_iter().chain(hard).collect();
-        (out.0, out.1) = false_overloads(precision, moves_at_85_percent(moves, &HELD_ROPES, &SEALS));
+        let (moved, highest) = false_overloads(precision, moves_at_85_percent(moves, &HELD_ROPES, &SEALS));
         let lowering = [(80.0, 20.0, 15.0, 1.0), (80.0, 20.0, 45.0, 1.5), (80.0, 20.0, 15.0, 0.5), (80.0, 20.0, 45.0, 0.5)];
-        (out.2, out.3) = lowerings_on(precision, &lowering, &HELD_ROPES);
+        let (lowered, lowest) = lowerings_on(precision, &lowering, &HELD_ROPES);
+        (moved, highest, lowered, lowest)
     });
     let world = |f: &mut Vec<String>| f.iter_mut().for_each(|x| *x = format!("{hz} Hz zeta {zeta}: {x}"));
     world(&mut out.0);
@@ -4224,9 +4222,7 @@ fn the_second_formulation_keeps_the_bounds_and_the_band_f32() {
 /// stages and that stage cross 0.866 of a step 0.97 s after it, the
 /// debounce adds 0.05 s.
 fn a_load_on_the_hook_at_once_is_cut_within_1_s_where_nothing_bounces(precision: Precision) {
-    let mut got = (0.0, Vec::new(), 0.0, Vec::new());
-    with_setting(&SECOND_FORMULATION, true, || got = snatched_in(precision, &[0.02, 0.1]));
-    let (worst, false_cut, peak90, uncut) = got;
+    let (worst, false_cut, peak90, uncut) = with_setting(&SECOND_FORMULATION, true, || snatched_in(precision, &[0.02, 0.1]));
     assert!(uncut.is_empty(), "110 % never cut: {uncut:#?}");
     assert!(worst <= 1.0, "110 % cut {worst:.2} s after it leaves the ground");
     assert!(false_cut.is_empty() && peak90 < 1.0, "90 % cut: {false_cut:#?}, highest u {peak90:.4}");
