@@ -1356,9 +1356,7 @@ impl<T: Real> StaticLoadBank<T> {
             });
             self.lift_peak_n = None;
             self.lift_bounced = false;
-            self.lift_turns_n = None;
-            self.lift_run_n = None;
-            self.lift_ring_n = None;
+            self.forget_ring();
         } else if self.lifting() {
             // The peak stops at the bounce's first crest.
             let peak = match self.lift_peak_n {
@@ -1380,10 +1378,15 @@ impl<T: Real> StaticLoadBank<T> {
         } else {
             self.lift_base_n = None;
             self.lift_peak_n = None;
-            self.lift_turns_n = None;
-            self.lift_run_n = None;
-            self.lift_ring_n = None;
+            self.forget_ring();
         }
+    }
+
+    /// Forgets a lift-off's ring: its turning points and its mean.
+    fn forget_ring(&mut self) {
+        self.lift_turns_n = None;
+        self.lift_run_n = None;
+        self.lift_ring_n = None;
     }
 
     /// Follows a bouncing lift-off's turning points in the first filter
@@ -2154,35 +2157,17 @@ mod tests {
     /// 1.2 Hz stages; the still force through three while a load rises).
     #[test]
     fn a_lift_off_is_read_at_once_until_it_bounces() {
-        use crate::filter::LowPass;
-        let th = 50f64.to_radians();
         let dt = 0.01;
         // The load over the run (kg); the bank's reading and whether the
         // lift-off has bounced, cycle by cycle; `watched`: whether the bank
         // is given the first stage (without it, the stage against the
         // bounce throughout).
-        let run_watched = |load: &dyn Fn(f64) -> f64, watched: bool| -> Vec<(f64, bool)> {
-            let mut bank = StaticLoadBank::new(SwingGeometry::<f64>::coles_930());
-            let mut filter = LowPass::new(1.2, 4);
-            (0..600)
-                .map(|k| {
-                    let force = filter.update(100_000.0 + 10.0 * load(f64::from(k) * dt), dt);
-                    bank.advance(th, 0.0, 0.0, dt);
-                    if watched {
-                        bank.watch_lift(filter.first_stage());
-                    }
-                    let still = if bank.lifting() { force + filter.last_stage_lead() } else { force };
-                    let terms = LoadTerms { at_rest: at_rest(), force_n: force, force_still_n: Some(still), seals_hold: false, angle_rad: th };
-                    let w = bank.update(&terms).map_or(f64::NAN, |l| l.load_kg);
-                    (w, bank.lift_bounced)
-                })
-                .collect()
-        };
+        let run_watched = |load: &dyn Fn(f64) -> f64, watched: bool| -> Vec<(f64, bool)> { lift_off_cycles(load, watched).iter().map(|c| (c.load_kg, c.bounced)).collect() };
         let run = |load: &dyn Fn(f64) -> f64| run_watched(load, true);
         // Empty for 3 s, then the load at once.
         let step = |t: f64| if t < 3.0 { 0.0 } else { 3000.0 };
         // Its bounce: twice the load at the first crest, ringing at 1.5 Hz.
-        let bounce = |t: f64| if t < 3.0 { 0.0 } else { 3000.0 * (1.0 - (std::f64::consts::TAU * 1.5 * (t - 3.0)).cos() * (-(t - 3.0)).exp()) };
+        let bounce = |t: f64| ringing(t, 1.0);
         // Turning down by 4 % of its rise: no bounce.
         let turn = |t: f64| if t < 3.0 { 0.0 } else if t < 3.5 { 3000.0 } else { 2880.0 };
         let (stepped, bounced, turned) = (run(&step), run(&bounce), run(&turn));
@@ -2253,32 +2238,19 @@ mod tests {
     /// crest and trough alone (their midrange) read it 10 % high.
     #[test]
     fn a_lift_off_is_weighed_by_its_ring() {
-        use crate::filter::LowPass;
-        let th = 50f64.to_radians();
-        let dt = 0.01;
         // Every mean found (of the load) and when (s after the step).
         let run = |load: &dyn Fn(f64) -> f64| -> Vec<(f64, f64)> {
-            let mut bank = StaticLoadBank::new(SwingGeometry::<f64>::coles_930());
-            let mut filter = LowPass::new(1.2, 4);
             let mut means: Vec<(f64, f64)> = Vec::new();
-            for k in 0..500 {
-                let t = f64::from(k) * dt;
-                let force = filter.update(100_000.0 + 10.0 * load(t), dt);
-                bank.advance(th, 0.0, 0.0, dt);
-                bank.watch_lift(filter.first_stage());
-                let still = if bank.lifting() { force + filter.last_stage_lead() } else { force };
-                let terms = LoadTerms { at_rest: at_rest(), force_n: force, force_still_n: Some(still), seals_hold: false, angle_rad: th };
-                bank.update(&terms);
-                if let Some(w) = bank.lift_ring_n.and_then(|f| at_rest().solve(f)) {
+            for c in lift_off_cycles(load, true) {
+                if let Some(w) = c.ring_kg {
                     if means.last().is_none_or(|&(m, _)| m != w / 3000.0) {
-                        means.push((w / 3000.0, t - 3.0));
+                        means.push((w / 3000.0, c.t - 3.0));
                     }
                 }
             }
             means
         };
-        let at_once = |decay: f64| move |t: f64| if t < 3.0 { 0.0 } else { 3000.0 * (1.0 - (std::f64::consts::TAU * 1.5 * (t - 3.0)).cos() * (-decay * (t - 3.0)).exp()) };
-        let (light, heavy) = (at_once(0.1), at_once(1.0));
+        let (light, heavy) = (|t| ringing(t, 0.1), |t| ringing(t, 1.0));
         // Name, take-up (s), the load over time.
         type Case<'a> = (&'a str, f64, &'a dyn Fn(f64) -> f64);
         let cases: [Case; 4] = [
@@ -2295,6 +2267,53 @@ mod tests {
         }
         // A load that rises and stays (no ring) gives no mean.
         assert!(run(&|t: f64| if t < 3.0 { 0.0 } else { 3000.0 }).is_empty());
+    }
+
+    /// One cycle of [`lift_off_cycles`]: its time (s), the bank's reading
+    /// (kg), whether the lift-off has bounced and its ring's mean (kg).
+    struct LiftCycle {
+        t: f64,
+        load_kg: f64,
+        bounced: bool,
+        ring_kg: Option<f64>,
+    }
+
+    /// The hook load `load` (kg at t s) through the limiter's force filter
+    /// (four 1.2 Hz stages; the still force through three while a load
+    /// rises) into the bank at 50°, boom still, 600 cycles of 10 ms;
+    /// `watched`: whether the bank is given the first stage (without it,
+    /// the stage against the bounce throughout, and no ring).
+    fn lift_off_cycles(load: &dyn Fn(f64) -> f64, watched: bool) -> Vec<LiftCycle> {
+        use crate::filter::LowPass;
+        let th = 50f64.to_radians();
+        let dt = 0.01;
+        let mut bank = StaticLoadBank::new(SwingGeometry::<f64>::coles_930());
+        let mut filter = LowPass::new(1.2, 4);
+        (0..600)
+            .map(|k| {
+                let t = f64::from(k) * dt;
+                let force = filter.update(100_000.0 + 10.0 * load(t), dt);
+                bank.advance(th, 0.0, 0.0, dt);
+                if watched {
+                    bank.watch_lift(filter.first_stage());
+                }
+                let still = if bank.lifting() { force + filter.last_stage_lead() } else { force };
+                let terms = LoadTerms { at_rest: at_rest(), force_n: force, force_still_n: Some(still), seals_hold: false, angle_rad: th };
+                let load_kg = bank.update(&terms).map_or(f64::NAN, |l| l.load_kg);
+                LiftCycle { t, load_kg, bounced: bank.lift_bounced, ring_kg: bank.lift_ring_n.and_then(|f| at_rest().solve(f)) }
+            })
+            .collect()
+    }
+
+    /// 3 t put on the hook at t = 3 s, ringing at 1.5 Hz from the empty hook
+    /// to twice the load, its amplitude decaying at `decay_per_s`: the load
+    /// on the hook (kg) at `t`.
+    fn ringing(t: f64, decay_per_s: f64) -> f64 {
+        if t < 3.0 {
+            0.0
+        } else {
+            3000.0 * (1.0 - (std::f64::consts::TAU * 1.5 * (t - 3.0)).cos() * (-decay_per_s * (t - 3.0)).exp())
+        }
     }
 
     /// 3 t taken up over `take_up` s from `s` = 0 on a mass-spring that rings
