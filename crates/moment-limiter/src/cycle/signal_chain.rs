@@ -327,7 +327,10 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         let released = direction == Direction::Still && self.static_friction_share < T::lit(0.01) && !swinging;
         self.seals_n = self.breakaway.update(force, released, (angle_f, rate_f), up_friction_n, dt_s);
         // A load rising from an empty hook: one filter stage fewer
-        // (crate::static_load, "A lift-off: one stage fewer").
+        // (crate::static_load, "A lift-off: one stage fewer"). Its bounce is
+        // watched in the first filter stage, less the offset and the seals'
+        // breakaway as `assess` takes them off the still force, so that the
+        // mean of its ring converts to a load as the still force does.
         let lifting = match self.bank.as_mut() {
             Some(b) => {
                 b.watch_lift(self.force_still_filter.first_stage().map(|f| f - cal.force_offset_n - self.seals_n));
