@@ -1746,56 +1746,128 @@ fn lift_off_snatched_in_0_3_s_is_cut_within_1_s_f32() {
     lift_off_snatched_in_0_3_s_is_cut_within_1_s(Precision::F32);
 }
 
-/// KNOWN GAP, measured (f64 and f32): 90 % snatched in 0.1 s at 20° is an
-/// OVERLOAD on the thesis's and the tip-height ropes (4 of the 40 cases of
-/// 90 % snatched in 0.1–0.2 s; highest estimated u 1.005), 1.3 s after it
-/// leaves the ground. The first crest of so fast a snatch's bounce pulls up
-/// to twice the load, and the stage against the bounce carries its second
-/// crest into the reading; the first comes through within the window in
-/// which a load rising from an empty hook is read through one stage fewer
-/// (`moment_limiter::static_load`, "A lift-off: one stage fewer";
-/// `FAST_LIFT_S`): through four stages throughout, 90 % read at most 0.990,
-/// no OVERLOAD, but 110 % was cut up to 1.22 s after. A window of 2 s instead of 1.2 s read more of
-/// the bounce: 90 % an OVERLOAD in 3–8 of 15 `crane-sim synth` lift-offs
-/// at 20°–80° taken up in 0.1–0.2 s. The mean of the ring
-/// ("A lift-off: the mean of its ring") reads this case at 0.905 and 0.992
-/// of the load within the window; it raises the reading, never lowers it.
-#[test]
-#[ignore = "KNOWN GAP: snatched in 0.1 s at 20 deg, 90 % is an OVERLOAD in 4 of 40 cases (u 1.005)"]
-fn lift_off_snatched_in_0_1_to_0_2_s_known_gap() {
-    let (_, false_cut, _, _) = snatched_in(Precision::F64, &[0.1, 0.15, 0.2]);
-    assert!(false_cut.is_empty(), "90 % cut: {false_cut:#?}");
-}
-
-/// Snatched faster, in 0.1–0.2 s: 110 % is cut within 1 s of leaving the
-/// ground (at 10°, and at 20° in 0.1 s, at once by the FAULT of p1 past its
-/// range). Measured, f64 and f32: at most 0.87 s after, since the mean of
-/// the bounce's ring is read from three of its turning points
-/// (`moment_limiter::static_load`, "A lift-off: the mean of its ring").
-/// Before, the stage against the bounce carried the ring's troughs into the
-/// reading: cut up to 1.14 s after (the 3 m rope at 35°; 1.22 s through the
-/// still force's four filter stages throughout).
-///
-/// And the known gap above pinned at its measured size (one run of the
-/// lift-offs for both): 90 % is an OVERLOAD only snatched in 0.1 s at 20°,
-/// in at most 4 cases, reading at most u 1.01 (1.005 measured).
-fn lift_off_snatched_in_0_1_to_0_2_s(precision: Precision) {
-    let (worst, false_cut, peak90, uncut) = snatched_in(precision, &[0.1, 0.15, 0.2]);
+/// Snatched faster, in 0.02–0.2 s: 110 % is cut within 1 s of leaving the
+/// ground (at 10°, and at 20° in 0.02–0.1 s, at once by the FAULT of p1 past
+/// its range), and 90 % is never an OVERLOAD and reads at most u 0.99.
+/// Measured, f64 and f32: cut at most 0.91 s after (put on in 0.02 s; 0.87 s
+/// in 0.1–0.2 s), since the mean of the bounce's ring is read from three of
+/// its turning points (`moment_limiter::static_load`, "A lift-off: the mean
+/// of its ring"; before, the stage against the bounce carried the ring's
+/// troughs into the reading: cut up to 1.14 s after, the 3 m rope at 35°;
+/// 1.22 s through the still force's four filter stages throughout). 90 %
+/// reads at most u 0.985 (f32 0.986), since the reading is held within 3 %
+/// of the ring's highest mean while the ring decays ("A lift-off: no
+/// higher than its ring"). Before that, 90 % snatched in 0.1 s at 20° was
+/// an OVERLOAD in 4 of 40 cases (u 1.005) and in 0.02 s in 6 of 40 (u
+/// 1.008), 1.3 s after it left the ground: the first crest of so fast a
+/// snatch's bounce pulls up to twice the load, and the stage against the
+/// bounce carried its second crest into the reading, where the ring's means
+/// had read it at 0.905 and 0.992 of the load.
+fn lift_off_snatched_in_0_02_to_0_2_s(precision: Precision) {
+    let (worst, false_cut, peak90, uncut) = snatched_in(precision, &[0.02, 0.1, 0.15, 0.2]);
     assert!(uncut.is_empty(), "110 % never cut: {uncut:#?}");
     assert!(worst <= 1.0, "110 % cut {worst:.2} s after it leaves the ground");
-    let other: Vec<&String> = false_cut.iter().filter(|f| !f.starts_with("20->20") || !f.contains("lift 0.1s")).collect();
-    assert!(false_cut.len() <= 4 && other.is_empty(), "{false_cut:#?}");
-    assert!(peak90 <= 1.01, "90 % read as u {peak90:.4}");
+    assert!(false_cut.is_empty() && peak90 <= 0.99, "90 % read as u {peak90:.4}, cut: {false_cut:#?}");
 }
 
 #[test]
-fn lift_off_snatched_in_0_1_to_0_2_s_is_cut_within_1_s_and_90_percent_stays_as_measured_f64() {
-    lift_off_snatched_in_0_1_to_0_2_s(Precision::F64);
+fn lift_off_snatched_in_0_02_to_0_2_s_is_cut_within_1_s_and_90_percent_never_f64() {
+    lift_off_snatched_in_0_02_to_0_2_s(Precision::F64);
 }
 
 #[test]
-fn lift_off_snatched_in_0_1_to_0_2_s_is_cut_within_1_s_and_90_percent_stays_as_measured_f32() {
-    lift_off_snatched_in_0_1_to_0_2_s(Precision::F32);
+fn lift_off_snatched_in_0_02_to_0_2_s_is_cut_within_1_s_and_90_percent_never_f32() {
+    lift_off_snatched_in_0_02_to_0_2_s(Precision::F32);
+}
+
+/// A load added at rest while a lift-off still rings, before any move:
+/// `w0` of the load rated at `angle` snatched in 0.1 s, `gap` s later taken
+/// to `w1` of it in `take_up` s, then 5 s at rest; constant friction, noise
+/// draw 5.
+fn added_to_a_ringing_lift_off(angle: f64, w0: f64, gap: f64, w1: f64, take_up: f64, rope: Rope) -> Program {
+    let rated = rated_kg(angle.to_radians());
+    let mut p = Program::new(angle, 0.0, rope_choice(rope, angle)).unwrap();
+    p.push(Segment::Hold { duration_s: HOLD_BEFORE_S }).unwrap();
+    p.push(Segment::LiftOff { duration_s: 0.1, load_kg: w0 * rated }).unwrap();
+    p.push(Segment::Hold { duration_s: gap }).unwrap();
+    p.push(Segment::LiftOff { duration_s: take_up, load_kg: w1 * rated }).unwrap();
+    p.push(Segment::Hold { duration_s: 5.0 }).unwrap();
+    p
+}
+
+/// [`added_to_a_ringing_lift_off`] at 20°, 65° and 80°, 0.6 s to 3 s after
+/// the snatch, taken up in 0.1 s or 0.5 s, on the thesis's rope and the
+/// shortest and longest held ones: 50 % or 90 % taken to 110 % (each cut's
+/// delay after the second take-up ends, s; `None` if never cut) and 60 %
+/// taken to 90 % (whether cut).
+fn loads_added_to_ringing_lift_offs(precision: Precision) -> (Vec<(String, Option<f64>)>, Vec<String>) {
+    let (mut over, mut under) = (Vec::new(), Vec::new());
+    for angle in [20.0, 65.0, 80.0] {
+        for gap in [0.6, 1.0, 1.5, 2.0, 3.0] {
+            for take_up in [0.1, 0.5] {
+                for rope in [Rope::Thesis, Rope::Held(0.0), Rope::Held(1.0)] {
+                    for (w0, w1) in [(0.5, 1.1), (0.9, 1.1), (0.6, 0.9)] {
+                        let rows = program_rows(&added_to_a_ringing_lift_off(angle, w0, gap, w1, take_up, rope), Seals::Constant, 5);
+                        let pts = replay_rows(&rows, Seals::Constant, precision);
+                        let on = HOLD_BEFORE_S + 0.1 + gap + take_up;
+                        let name = format!("{angle} deg, {w0} -> {w1} of rated {gap} s after, in {take_up} s, {rope:?}");
+                        let cut = pts.iter().find(|q| q.t >= HOLD_BEFORE_S && q.state.cuts()).map(|q| q.t - on);
+                        if w1 > 1.0 {
+                            over.push((name, cut));
+                        } else if cut.is_some() {
+                            under.push(name);
+                        }
+                    }
+                }
+            }
+        }
+    }
+    let worst = over.iter().map(|(_, c)| c.unwrap_or(f64::INFINITY)).fold(f64::NEG_INFINITY, f64::max);
+    println!("{precision:?}: loads added to ringing lift-offs: 110 % cut at most {worst:.2} s after the take-up ends, 90 % cut in {} cases", under.len());
+    (over, under)
+}
+
+/// KNOWN GAP, measured (f64 and f32): a load added at rest 1.5–3 s after
+/// 50 % of rated was snatched, before any move, on the 3 m rope at 65° and
+/// 80° (in 0.1 s, to 110 %) is cut 1.05–1.20 s after its take-up ends. The
+/// same before the ring's cap ("A lift-off: no higher than its ring" in
+/// `moment_limiter::static_load`): found testing the cap. Only a load
+/// rising from an empty hook is read through one stage fewer and has its
+/// give followed; this one rises from a hanging load.
+#[test]
+#[ignore = "KNOWN GAP: 110 % added 1.5-3 s after a 50 % lift-off on the 3 m rope at 65-80 deg is cut up to 1.20 s after"]
+fn a_load_added_to_a_ringing_lift_off_known_gap() {
+    let (over, under) = loads_added_to_ringing_lift_offs(Precision::F64);
+    let late: Vec<_> = over.iter().filter(|(_, c)| !c.is_some_and(|c| c <= 1.0 + 1e-9)).collect();
+    assert!(late.is_empty() && under.is_empty(), "{late:#?} {under:#?}");
+}
+
+/// A load added at rest while a lift-off still rings, before any move: the
+/// ring's cap ("A lift-off: no higher than its ring") lowers a reading, and
+/// must not keep a heavier load waiting. 110 % is cut within 1 s of its
+/// take-up's end but in the known gap above (there within 1.25 s; 1.20 s
+/// measured), and 90 % is never cut. Measured (f64): within 0.76 s
+/// elsewhere (90 % snatched at 20° and taken to 110 % 1 s later; 0.20 s
+/// before the cap, when 90 % read near the cut: 90 % snatched at 20° was an
+/// OVERLOAD before any load was added in 12 of the 36 cases there).
+fn loads_added_to_ringing_lift_offs_are_cut(precision: Precision) {
+    let (over, under) = loads_added_to_ringing_lift_offs(precision);
+    let gap = |n: &str| (n.starts_with("65 deg") || n.starts_with("80 deg")) && n.contains("in 0.1 s");
+    // Within 1 s to the sample (the times are sums of 10 ms steps).
+    let late: Vec<_> = over.iter().filter(|(n, c)| !c.is_some_and(|c| c <= 1.0 + 1e-9 || (gap(n) && c <= 1.25))).collect();
+    let elsewhere = over.iter().filter(|(n, _)| !gap(n)).map(|(_, c)| c.unwrap_or(f64::INFINITY)).fold(f64::NEG_INFINITY, f64::max);
+    println!("{precision:?}: outside the known gap, 110 % cut at most {elsewhere:.2} s after the take-up ends");
+    assert!(late.is_empty() && under.is_empty(), "110 % cut late: {late:#?}; 90 % cut: {under:#?}");
+}
+
+#[test]
+fn loads_added_to_ringing_lift_offs_are_cut_f64() {
+    loads_added_to_ringing_lift_offs_are_cut(Precision::F64);
+}
+
+#[test]
+fn loads_added_to_ringing_lift_offs_are_cut_f32() {
+    loads_added_to_ringing_lift_offs_are_cut(Precision::F32);
 }
 
 /// [`snatched_in`] on a boom 30 % softer than the limiter's model (Young's
@@ -1806,44 +1878,48 @@ fn snatched_on_a_softer_boom(take_ups: &[f64]) -> (f64, Vec<String>, f64, Vec<St
 }
 
 /// KNOWN GAP, measured (f64): on a boom 30 % softer than the model, 90 %
-/// snatched in 0.3 s is an OVERLOAD in 24 of 40 cases (every rope at 10°,
-/// 20° and 35°; highest estimated u 1.029), in 0.1 s in 18 of 40 (20°,
-/// 35° and the 3 m rope at 65°; u 1.070); taken up in 0.5 s, 1 s or 2 s in
-/// none (at most u 0.976). Its ring is
-/// slower than the stage against the bounce was set for: at 20° the force
-/// rings from 0.6 to 1.4 × the load at 1.2 Hz, the ring's mean is read at
-/// 0.996 of the load 1.1 s after it leaves the ground
-/// (`moment_limiter::static_load`, "A lift-off: the mean of its ring"), and
-/// the stage carries the second crest to 1.09 × the load 0.25 s later. The
-/// same before the ring's mean was read (it only raises the reading): this
-/// is no new behaviour, found testing the snatch on other booms. 110 % is
-/// cut within 0.99 s (0.1 s; 1.07 s before the ring's mean) and 0.93 s
-/// (0.3 s). With the model's boom, or its damping 0.3 of the model's (the
-/// ring longer), 90 % snatched in 0.3 s is never an OVERLOAD (at most u
-/// 0.975); snatched in 0.1 s, 4 of 40 (the known gap of
-/// [`lift_off_snatched_in_0_1_to_0_2_s_known_gap`]) and 12 of 40 (u 1.010).
-/// How the gap grows as the boom softens, 90 % snatched in 0.1 s / 0.3 s:
-/// Young's modulus 1.3 of the model's, none (u 0.972 / 0.956); 1.0, 4 of 40
-/// (1.005) / none (0.970); 0.9, 16 of 40 (1.024) / none (0.983); 0.8, 18 of
-/// 40 (1.045) / 2 of 40 (1.003); 0.7, 18 / 24 of 40 (1.070 / 1.029).
-/// Measured with `BOOM_FACTORS` and [`snatched_in`], 0.1–2 s.
+/// snatched in 0.02–0.1 s on the 3 m rope at 65° is an OVERLOAD (2 of 40
+/// cases, both friction laws; highest estimated u 1.023 in 0.1 s, 1.028 in
+/// 0.02 s), about 1.8 s after it leaves the ground; and 110 % put on in
+/// 0.02 s is cut 1.04 s after (0.99 s in 0.1 s). There the ring rides on
+/// the swing that the boom's give starts (the softer boom gives more than
+/// the model's, and no rope of the bank predicts the rest), its turning
+/// points leave the envelope of a decaying ring, and the reading is no
+/// longer held to the ring's mean (`moment_limiter::static_load`, "A
+/// lift-off: no higher than its ring"); the stage against the bounce
+/// carries a crest into it. Snatched in 0.3 s, taken up in 0.5–2 s: never
+/// (at most u 0.990). Before the ring's cap, 90 % snatched in 0.3 s was an
+/// OVERLOAD in 24 of 40 cases (every rope at 10°–35°, u up to 1.029) and in
+/// 0.1 s in 18 of 40 (u 1.070): the ring is slower (1.2 Hz at 20°) and
+/// swings from 0.6 to 1.4 × the load, its mean reads the load at 0.996 of
+/// itself 1.1 s after it leaves the ground, and the stage carried the second
+/// crest to 1.09 × the load 0.25 s later. How it goes as the boom softens,
+/// 90 % snatched in 0.1 s / 0.3 s / 0.02 s (before the cap, 0.1 s / 0.3 s):
+/// Young's modulus 1.3 of the model's, none (u 0.972 / 0.956 / 0.973; was
+/// none / none); 1.0, none (0.984 / 0.970 / 0.985; 4 of 40 / none); 0.9,
+/// none (0.991 / 0.975 / 0.995; 16 of 40 / none); 0.8, 2 of 40 at 65° (1.005
+/// / 0.978 / 1.010; 18 / 2 of 40); 0.7, 2 of 40 at 65° (1.023 / 0.990 /
+/// 1.028; 18 / 24 of 40). The boom's damping 0.3 of the model's: none
+/// (0.984 / 0.974 / 0.990; 12 of 40 / none). 110 % is cut within 0.99 s in
+/// all of them but put on in 0.02 s on the softest (1.04 s). Measured with
+/// `BOOM_FACTORS` and [`snatched_in`].
 #[test]
-#[ignore = "KNOWN GAP: on a boom 30 % softer than the model, 90 % snatched in 0.1-0.3 s is an OVERLOAD in 18-24 of 40 cases (u up to 1.070)"]
+#[ignore = "KNOWN GAP: on a boom 30 % softer than the model, 90 % snatched in 0.1 s on the 3 m rope at 65 deg is an OVERLOAD (2 of 40 cases, u 1.023)"]
 fn lift_off_snatched_on_a_softer_boom_known_gap() {
     let (worst, false_cut, _, uncut) = snatched_on_a_softer_boom(&[0.1, 0.3]);
     assert!(worst <= 1.0 && false_cut.is_empty() && uncut.is_empty(), "110 % cut {worst:.2} s after; 90 % cut: {false_cut:#?}; 110 % never cut: {uncut:#?}");
 }
 
-/// The known gap above pinned at its measured size, snatched in 0.3 s: 110 %
-/// is cut within 1 s of leaving the ground (0.93 s measured), and 90 % is
-/// an OVERLOAD in at most 24 of 40 cases, at 10°–35° only, reading at most
-/// u 1.035 (1.029 measured).
+/// The known gap above pinned at its measured size: snatched in 0.1 s or
+/// 0.3 s, 110 % is cut within 1 s of leaving the ground (0.99 s measured),
+/// and 90 % is an OVERLOAD only on the 3 m rope at 65°, in at most 2 of
+/// the 80 cases, reading at most u 1.03 (1.023 measured).
 #[test]
 fn lift_off_snatched_on_a_softer_boom_stays_as_measured() {
-    let (worst, false_cut, peak90, uncut) = snatched_on_a_softer_boom(&[0.3]);
+    let (worst, false_cut, peak90, uncut) = snatched_on_a_softer_boom(&[0.1, 0.3]);
     assert!(uncut.is_empty() && worst <= 1.0, "110 % cut {worst:.2} s after; never cut: {uncut:#?}");
-    let other: Vec<&String> = false_cut.iter().filter(|f| !(f.starts_with("10->") || f.starts_with("20->") || f.starts_with("35->"))).collect();
-    assert!(false_cut.len() <= 24 && other.is_empty() && peak90 <= 1.035, "90 % read as u {peak90:.4}, cut: {false_cut:#?}");
+    let other: Vec<&String> = false_cut.iter().filter(|f| !(f.starts_with("65->65") && f.contains("Held(0.0)"))).collect();
+    assert!(false_cut.len() <= 2 && other.is_empty() && peak90 <= 1.03, "90 % read as u {peak90:.4}, cut: {false_cut:#?}");
 }
 
 /// 90 % of rated lifted on the 3 m held rope at 80° (where the swing that
@@ -2043,23 +2119,25 @@ fn lift_off_against_an_ideal_bounce_f32() {
 
 /// The same taken up in 0.5 s and 0.3 s, where the filters that keep a
 /// 1 Hz bounce out cannot also tell 90 % from 110 % within a second. A
-/// bounce of 1 Hz reads 90 % as an OVERLOAD in 10 of its 12 cases (peak
-/// estimated u up to 1.040 taken up in 0.5 s, 1.078 in 0.3 s: its first
+/// bounce of 1 Hz reads 90 % as an OVERLOAD in 8 of its 12 cases (peak
+/// estimated u up to 1.013 taken up in 0.5 s, 1.069 in 0.3 s: its first
 /// crest pulls up to twice the load, and the filters pass a fifth of
-/// 1 Hz); 8 of 12 (up to 1.038 and 1.071) through the still force's four
+/// 1 Hz); 10 of 12 (up to 1.040 and 1.078) before the reading was held to
+/// the ring's mean (`moment_limiter::static_load`, "A lift-off: no higher
+/// than its ring"); 8 of 12 (up to 1.038 and 1.071) through the still force's four
 /// filter stages throughout, before a load rising from an empty hook was
 /// read through three (`moment_limiter::static_load`, "A lift-off: one
 /// stage fewer"), and all 12 before the rope bank followed the tip's give
 /// in a lift-off, whose swing, which this world's force does not have,
 /// lowers the lowest rope's reading. At 1.5–2 Hz, 90 % reads at most u
-/// 0.992 (0.3 s) and 0.964 (0.5 s), and 110 % is cut within 0.74 s (0.99 s
+/// 0.977 (0.3 s; 0.992 before the ring's cap) and 0.964 (0.5 s), and 110 % is cut within 0.74 s (0.99 s
 /// before the mean of the bounce's ring was read, `moment_limiter::static_load`,
 /// "A lift-off: the mean of its ring"; 0.97–1.08 s in 0.3 s through four
 /// stages). In the asserted cases (`lift_off_against_an_ideal_bounce_*`,
-/// 0.8 s and slower) 90 % reads at most 0.977 and 110 % is cut within 0.65 s
+/// 0.8 s and slower) 90 % reads at most 0.972 (0.977 before the ring's cap) and 110 % is cut within 0.65 s
 /// (0.69 s before the ring's mean, 0.84 s through four stages).
 #[test]
-#[ignore = "KNOWN GAP: a lift-off snatched in 0.5 s or less against a bounce of 1 Hz: 90 % is an OVERLOAD in 10 of 12 cases"]
+#[ignore = "KNOWN GAP: a lift-off snatched in 0.5 s or less against a bounce of 1 Hz: 90 % is an OVERLOAD in 8 of 12 cases"]
 fn lift_off_snatched_against_an_ideal_bounce_known_gap() {
     let (failures, _) = lift_off_against_an_ideal_bounce(Precision::F64, &[0.3, 0.5]);
     assert!(failures.is_empty(), "{failures:#?}");
