@@ -1831,9 +1831,13 @@ fn loads_added_to_ringing_lift_offs(precision: Precision) -> (Vec<(String, Optio
 /// 50 % of rated was snatched, before any move, on the 3 m rope at 65° and
 /// 80° (in 0.1 s, to 110 %) is cut 1.05–1.20 s after its take-up ends. The
 /// same before the ring's cap ("A lift-off: no higher than its ring" in
-/// `moment_limiter::static_load`): found testing the cap. Only a load
-/// rising from an empty hook is read through one stage fewer and has its
-/// give followed; this one rises from a hanging load.
+/// `moment_limiter::static_load`): found testing the cap. At 80° the force
+/// rings at 3.2 Hz from 110 to 260 kN after the take-up (the 50 % rang from
+/// 84 to 128 kN before it), and the reading climbs through the filter's
+/// four stages and the stage against the bounce. Only a load rising from an
+/// empty hook is read through one stage fewer and by its ring's mean, and
+/// has its give followed (following the give from a steadily hanging load
+/// too, tried, cut it 0.04 s sooner).
 #[test]
 #[ignore = "KNOWN GAP: 110 % added 1.5-3 s after a 50 % lift-off on the 3 m rope at 65-80 deg is cut up to 1.20 s after"]
 fn a_load_added_to_a_ringing_lift_off_known_gap() {
