@@ -1495,11 +1495,10 @@ impl<T: Real> StaticLoadBank<T> {
         self.lift_ring_broken |= if falling { run < before - turn } else { run > before + turn };
         self.lift_ring_quiet_s += self.dt_s;
         if (f - run).abs() >= turn {
-            self.lift_ring_n = ring_mean(before, last, run).or(self.lift_ring_n);
-            self.lift_ring_top_n = match (self.lift_ring_top_n, self.lift_ring_n) {
-                (Some(top), Some(m)) => Some(top.max(m)),
-                (top, m) => top.or(m),
-            };
+            if let Some(m) = ring_mean(before, last, run) {
+                self.lift_ring_n = Some(m);
+                self.lift_ring_top_n = Some(self.lift_ring_top_n.map_or(m, |top| top.max(m)));
+            }
             self.lift_ring_quiet_s = T::lit(0.0);
             self.lift_turns_n = Some((last, run));
             self.lift_run_n = None;
