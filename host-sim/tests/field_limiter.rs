@@ -1780,42 +1780,50 @@ fn lift_off_snatched_in_0_02_to_0_2_s_is_cut_within_1_s_and_90_percent_never_f32
     lift_off_snatched_in_0_02_to_0_2_s(Precision::F32);
 }
 
-/// A load added at rest while a lift-off still rings, before any move:
-/// `w0` of the load rated at `angle` snatched in 0.1 s, `gap` s later taken
-/// to `w1` of it in `take_up` s, then 5 s at rest; constant friction, noise
-/// draw 5.
-fn added_to_a_ringing_lift_off(angle: f64, w0: f64, gap: f64, w1: f64, take_up: f64, rope: Rope) -> Program {
+/// A load added at rest after a lift-off, before any move: `w0` of the
+/// load rated at `angle` taken up in `lift_s` s (snatched in 0.1 s, its ring
+/// still rings for seconds), `gap` s later taken to `w1` of it in `take_up`
+/// s, then 5 s at rest; constant friction, noise draw 5.
+fn added_after_a_lift_off(angle: f64, (w0, lift_s): (f64, f64), gap: f64, w1: f64, take_up: f64, rope: Rope) -> Program {
     let rated = rated_kg(angle.to_radians());
     let mut p = Program::new(angle, 0.0, rope_choice(rope, angle)).unwrap();
     p.push(Segment::Hold { duration_s: HOLD_BEFORE_S }).unwrap();
-    p.push(Segment::LiftOff { duration_s: 0.1, load_kg: w0 * rated }).unwrap();
+    p.push(Segment::LiftOff { duration_s: lift_s, load_kg: w0 * rated }).unwrap();
     p.push(Segment::Hold { duration_s: gap }).unwrap();
     p.push(Segment::LiftOff { duration_s: take_up, load_kg: w1 * rated }).unwrap();
     p.push(Segment::Hold { duration_s: 5.0 }).unwrap();
     p
 }
 
-/// [`added_to_a_ringing_lift_off`] at 20°, 65° and 80°, 0.6 s to 3 s after
-/// the snatch, taken up in 0.1 s or 0.5 s, on the thesis's rope and the
+/// [`added_after_a_lift_off`] snatched in 0.1 s, at 20°, 65° and 80°, 0.6 s
+/// to 3 s after the snatch, taken up in 0.1 s or 0.5 s, on the thesis's rope and the
 /// shortest and longest held ones: 50 % or 90 % taken to 110 % (each cut's
 /// delay after the second take-up ends, s; `None` if never cut) and 60 %
 /// taken to 90 % (whether cut).
 fn loads_added_to_ringing_lift_offs(precision: Precision) -> (Vec<(String, Option<f64>)>, Vec<String>) {
+    loads_added_after_lift_offs(precision, "ringing lift-offs", &[0.1], &[0.6, 1.0, 1.5, 2.0, 3.0])
+}
+
+/// [`loads_added_to_ringing_lift_offs`] after lift-offs taken up in each of
+/// `lifts` s, each of `gaps` s before the load is added.
+fn loads_added_after_lift_offs(precision: Precision, what: &str, lifts: &[f64], gaps: &[f64]) -> (Vec<(String, Option<f64>)>, Vec<String>) {
     let (mut over, mut under) = (Vec::new(), Vec::new());
     for angle in [20.0, 65.0, 80.0] {
-        for gap in [0.6, 1.0, 1.5, 2.0, 3.0] {
-            for take_up in [0.1, 0.5] {
-                for rope in [Rope::Thesis, Rope::Held(0.0), Rope::Held(1.0)] {
-                    for (w0, w1) in [(0.5, 1.1), (0.9, 1.1), (0.6, 0.9)] {
-                        let rows = program_rows(&added_to_a_ringing_lift_off(angle, w0, gap, w1, take_up, rope), Seals::Constant, 5);
-                        let pts = replay_rows(&rows, Seals::Constant, precision);
-                        let on = HOLD_BEFORE_S + 0.1 + gap + take_up;
-                        let name = format!("{angle} deg, {w0} -> {w1} of rated {gap} s after, in {take_up} s, {rope:?}");
-                        let cut = pts.iter().find(|q| q.t >= HOLD_BEFORE_S && q.state.cuts()).map(|q| q.t - on);
-                        if w1 > 1.0 {
-                            over.push((name, cut));
-                        } else if cut.is_some() {
-                            under.push(name);
+        for &lift_s in lifts {
+            for &gap in gaps {
+                for take_up in [0.1, 0.5] {
+                    for rope in [Rope::Thesis, Rope::Held(0.0), Rope::Held(1.0)] {
+                        for (w0, w1) in [(0.5, 1.1), (0.9, 1.1), (0.6, 0.9)] {
+                            let rows = program_rows(&added_after_a_lift_off(angle, (w0, lift_s), gap, w1, take_up, rope), Seals::Constant, 5);
+                            let pts = replay_rows(&rows, Seals::Constant, precision);
+                            let on = HOLD_BEFORE_S + lift_s + gap + take_up;
+                            let name = format!("{angle} deg, {w0} (lifted in {lift_s} s) -> {w1} of rated {gap} s after, in {take_up} s, {rope:?}");
+                            let cut = pts.iter().find(|q| q.t >= HOLD_BEFORE_S && q.state.cuts()).map(|q| q.t - on);
+                            if w1 > 1.0 {
+                                over.push((name, cut));
+                            } else if cut.is_some() {
+                                under.push(name);
+                            }
                         }
                     }
                 }
@@ -1823,7 +1831,7 @@ fn loads_added_to_ringing_lift_offs(precision: Precision) -> (Vec<(String, Optio
         }
     }
     let worst = over.iter().map(|(_, c)| c.unwrap_or(f64::INFINITY)).fold(f64::NEG_INFINITY, f64::max);
-    println!("{precision:?}: loads added to ringing lift-offs: 110 % cut at most {worst:.2} s after the take-up ends, 90 % cut in {} cases", under.len());
+    println!("{precision:?}: loads added to {what}: 110 % cut at most {worst:.2} s after the take-up ends, 90 % cut in {} cases", under.len());
     (over, under)
 }
 
@@ -1835,43 +1843,52 @@ fn within_a_second(delay_s: f64) -> bool {
 
 /// KNOWN GAP, measured (f64 and f32): a load added at rest 1.5–3 s after
 /// 50 % or 90 % of rated was snatched, before any move, at 65° and 80°,
-/// taken to 110 % in 0.1 s, is cut 1.01–1.20 s after its take-up ends (on
+/// taken to 110 % in 0.1 s, is cut 1.01–1.14 s after its take-up ends (on
 /// the 3 m rope; at 65° 1.5 s after, on the thesis's and the longest rope
-/// too). The
-/// same before the ring's cap ("A lift-off: no higher than its ring" in
-/// `moment_limiter::static_load`): found testing the cap. At 80° the force
-/// rings at 3.2 Hz from 110 to 260 kN after the take-up (the 50 % rang from
-/// 84 to 128 kN before it), and the reading climbs through the filter's
-/// four stages and the stage against the bounce. Only a load rising from an
-/// empty hook is read through one stage fewer and by its ring's mean, and
-/// has its give followed (following the give from a steadily hanging load
-/// too, tried, cut it 0.04 s sooner).
+/// too). Where the snatch's ring still decays when the load is added, and
+/// the lift window has closed, the ring's break reads the load as a lift-off
+/// ("A load added while a lift-off rings: a lift-off again" in
+/// `moment_limiter::static_load`): 50 % taken to 110 % 3 s after on the 3 m
+/// rope at 80°, where the force rang at 3.2 Hz from 99 to 116 kN before the
+/// take-up and from 110 to 260 kN after, was cut 1.20 s after, now within
+/// the second. On the 3 m rope at 65° the ring rides on the swing that the
+/// boom's give starts and breaks within the lift window, so nothing follows
+/// it when the load is added; reading a break within the window as a
+/// lift-off too, tried, cut 110 % snatched there 1.04 s after it left the
+/// ground (0.91 s) and made 90 % an OVERLOAD in 4 of 40 cases.
 #[test]
-#[ignore = "KNOWN GAP: 110 % added in 0.1 s 1.5-3 s after a lift-off at 65-80 deg is cut up to 1.20 s after its take-up"]
+#[ignore = "KNOWN GAP: 110 % added in 0.1 s 1.5-3 s after a lift-off at 65-80 deg is cut up to 1.14 s after its take-up"]
 fn a_load_added_to_a_ringing_lift_off_known_gap() {
     let (over, under) = loads_added_to_ringing_lift_offs(Precision::F64);
     let late: Vec<_> = over.iter().filter(|(_, c)| !c.is_some_and(within_a_second)).collect();
     assert!(late.is_empty() && under.is_empty(), "{late:#?} {under:#?}");
 }
 
-/// A load added at rest while a lift-off still rings, before any move: the
-/// ring's cap ("A lift-off: no higher than its ring") lowers a reading, and
-/// must not keep a heavier load waiting. 110 % is cut within 1 s of its
-/// take-up's end but in the known gap above (there within 1.25 s; 1.20 s
-/// measured), and 90 % is never cut. Measured (f64 and f32): within 1.00 s
-/// elsewhere (the 3 m rope at 80°, taken up in 0.5 s 3 s after; the same
-/// before the cap). Where the cap held the reading down, 90 % snatched at
-/// 20° and taken to 110 % 1 s later is cut 0.76 s after (0.20 s before the
-/// cap, when 90 % alone read near the cut: at 20° it was cut before any
-/// load was added in 14 of the 30 cases of 90 % taken to 110 %, the known
-/// gap of the snatch that the cap closed).
-fn loads_added_to_ringing_lift_offs_are_cut(precision: Precision) {
-    let (over, under) = loads_added_to_ringing_lift_offs(precision);
-    let gap = |n: &str| (n.starts_with("65 deg") || n.starts_with("80 deg")) && n.contains("in 0.1 s");
-    let late: Vec<_> = over.iter().filter(|(n, c)| !c.is_some_and(|c| within_a_second(c) || (gap(n) && c <= 1.25))).collect();
+/// Asserts the loads added after lift-offs ([`loads_added_after_lift_offs`]:
+/// `over`, each 110 % with its cut's delay; `under`, the 90 % cut): 110 % cut
+/// within 1 s of its take-up's end, but within `gap_s` where it is taken up
+/// in 0.1 s at 65° or 80° (the known gaps), and 90 % never cut.
+fn cut_within_1_s_but_at_65_to_80_degrees_in_0_1_s((over, under): (Vec<(String, Option<f64>)>, Vec<String>), gap_s: f64, precision: Precision) {
+    let gap = |n: &str| (n.starts_with("65 deg") || n.starts_with("80 deg")) && n.contains(", in 0.1 s,");
+    let late: Vec<_> = over.iter().filter(|(n, c)| !c.is_some_and(|c| within_a_second(c) || (gap(n) && c <= gap_s))).collect();
     let elsewhere = over.iter().filter(|(n, _)| !gap(n)).map(|(_, c)| c.unwrap_or(f64::INFINITY)).fold(f64::NEG_INFINITY, f64::max);
     println!("{precision:?}: outside the known gap, 110 % cut at most {elsewhere:.2} s after the take-up ends");
     assert!(late.is_empty() && under.is_empty(), "110 % cut late: {late:#?}; 90 % cut: {under:#?}");
+}
+
+/// A load added at rest while a lift-off still rings, before any move: the
+/// ring's cap ("A lift-off: no higher than its ring") lowers a reading, and
+/// must not keep a heavier load waiting. 110 % is cut within 1 s of its
+/// take-up's end but in the known gap above (there within 1.15 s; 1.14 s
+/// measured, 1.20 s before a ring's break was read as a lift-off), and 90 %
+/// is never cut. Measured (f64 and f32): within 0.97 s elsewhere (1.00 s
+/// before). Where the cap held the reading down, 90 % snatched at 20° and
+/// taken to 110 % 1 s later is cut 0.76 s after (0.20 s before the cap, when
+/// 90 % alone read near the cut: at 20° it was cut before any load was added
+/// in 14 of the 30 cases of 90 % taken to 110 %, the known gap of the snatch
+/// that the cap closed).
+fn loads_added_to_ringing_lift_offs_are_cut(precision: Precision) {
+    cut_within_1_s_but_at_65_to_80_degrees_in_0_1_s(loads_added_to_ringing_lift_offs(precision), 1.15, precision);
 }
 
 #[test]
@@ -1882,6 +1899,53 @@ fn loads_added_to_ringing_lift_offs_are_cut_f64() {
 #[test]
 fn loads_added_to_ringing_lift_offs_are_cut_f32() {
     loads_added_to_ringing_lift_offs_are_cut(Precision::F32);
+}
+
+/// [`loads_added_after_lift_offs`] 5 s and 12 s after lift-offs snatched in
+/// 0.1 s or taken up in 2 s: the load hangs steadily when the next is added
+/// (the snatch's ring has died).
+fn loads_added_to_hanging_loads(precision: Precision) -> (Vec<(String, Option<f64>)>, Vec<String>) {
+    loads_added_after_lift_offs(precision, "loads hanging steadily", &[0.1, 2.0], &[5.0, 12.0])
+}
+
+/// KNOWN GAP, measured (f64 and f32 alike; the same at the code before a
+/// ring's break was read as a lift-off): a load added at rest to one
+/// hanging steadily before any move, 50 % taken to 110 % in 0.1 s at 65° or
+/// 80°, is cut 1.01–1.11 s after its take-up ends (11 of the 72 cases of
+/// 110 %; the longest on the 3 m rope after a lift-off taken up in 2 s).
+/// Nothing reads it as a lift-off: that takes a load rising from an empty
+/// hook, or the break of a ring still followed, and the new load climbs
+/// through the filter's four stages and the stage against the bounce. Tried:
+/// reading as a lift-off any rise of the first filter stage by 10 % of the
+/// load above its 0.5 s average, after 1 s within that band. It cut these
+/// within the second, but a winch started hard pulls that much for a quarter
+/// second: 90 % hoisted hard was cut in 8 of 9 cases (6 of 9,
+/// `hard_hoist_starts_and_stops_stay_as_measured`), and with a 20 % band 85 %
+/// read u 1.011.
+#[test]
+#[ignore = "KNOWN GAP: 110 % added in 0.1 s to a load hanging steadily before any move, at 65-80 deg, is cut up to 1.11 s after its take-up"]
+fn a_load_added_to_a_hanging_load_known_gap() {
+    let (over, under) = loads_added_to_hanging_loads(Precision::F64);
+    let late: Vec<_> = over.iter().filter(|(_, c)| !c.is_some_and(within_a_second)).collect();
+    assert!(late.is_empty() && under.is_empty(), "{late:#?} {under:#?}");
+}
+
+/// The known gap above pinned at its measured size: 110 % cut within 1 s
+/// of its take-up's end but taken up in 0.1 s at 65° or 80° (within 1.15 s
+/// there; 1.11 s measured), and 90 % never cut. Measured (f64 and f32):
+/// within 0.94 s elsewhere.
+fn loads_added_to_hanging_loads_are_cut(precision: Precision) {
+    cut_within_1_s_but_at_65_to_80_degrees_in_0_1_s(loads_added_to_hanging_loads(precision), 1.15, precision);
+}
+
+#[test]
+fn loads_added_to_hanging_loads_are_cut_f64() {
+    loads_added_to_hanging_loads_are_cut(Precision::F64);
+}
+
+#[test]
+fn loads_added_to_hanging_loads_are_cut_f32() {
+    loads_added_to_hanging_loads_are_cut(Precision::F32);
 }
 
 /// [`snatched_in`] on a boom 30 % softer than the limiter's model (Young's
