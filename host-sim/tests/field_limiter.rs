@@ -1921,7 +1921,11 @@ fn loads_added_to_hanging_loads(precision: Precision) -> (Vec<(String, Option<f6
 /// within the second, but a winch started hard pulls that much for a quarter
 /// second: 90 % hoisted hard was cut in 8 of 9 cases (6 of 9,
 /// `hard_hoist_starts_and_stops_stay_as_measured`), and with a 20 % band 85 %
-/// read u 1.011.
+/// read u 1.011. Reading a rise of 30 % as one (after a second steady within
+/// 10 %) kept the hoists as they are and cut all but one case within the
+/// second (1.02 s), but 85 % hanging at power-up and luffed in 10 s
+/// (`no_false_overload_at_85_percent_*`) read up to u 0.947 where it read
+/// 0.90–0.91.
 #[test]
 #[ignore = "KNOWN GAP: 110 % added in 0.1 s to a load hanging steadily before any move, at 65-80 deg, is cut up to 1.11 s after its take-up"]
 fn a_load_added_to_a_hanging_load_known_gap() {
