@@ -5,6 +5,9 @@
 use std::path::Path;
 use std::process::Command;
 
+mod common;
+use common::{json, replay};
+
 fn crane_sim(args: &[&str]) -> std::process::Output {
     Command::new(env!("CARGO_BIN_EXE_crane-sim")).args(args).output().expect("runs")
 }
@@ -209,12 +212,14 @@ fn a_load_added_while_a_lift_off_rings_is_cut_within_1_s_of_its_take_up() {
     // The log's columns: t, p1, p2, angle, true load.
     let rows = csv(&log);
     let taken_up = rows.iter().find(|r| r[4] >= 10476.0).map(|r| r[0]).expect("the second take-up");
-    let out = crane_sim(&["replay", log.to_str().expect("path")]);
-    let events = String::from_utf8_lossy(&out.stdout).into_owned();
+    let report = json(&replay(&log, &["--json"]));
+    let events = &report["events"];
     let cut = events
-        .lines()
-        .find(|l| l.contains(" OVERLOAD "))
-        .and_then(|l| l.strip_prefix("t=")?.split(' ').next()?.parse::<f64>().ok())
+        .as_array()
+        .expect("events")
+        .iter()
+        .find(|e| e["state"] == "OVERLOAD")
+        .and_then(|e| e["t_s"].as_f64())
         .expect("an OVERLOAD");
-    assert!(cut > taken_up - 0.1 && cut - taken_up <= 1.0, "cut at {cut} s, the take-up ended at {taken_up} s:\n{events}");
+    assert!(cut > taken_up - 0.1 && cut - taken_up <= 1.0, "cut at {cut} s, the take-up ended at {taken_up} s: {events}");
 }
