@@ -330,10 +330,12 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         // (crate::static_load, "A lift-off: one stage fewer"). Its bounce is
         // watched in the first filter stage, less the offset and the seals'
         // breakaway as `assess` takes them off the still force, so that the
-        // mean of its ring converts to a load as the still force does.
+        // mean of its ring converts to a load as the still force does. A
+        // steady load's rise must pass the seals' up-friction too: a raise's
+        // start puts it in the force before the angle shows it.
         let lifting = match self.bank.as_mut() {
             Some(b) => {
-                b.watch_lift(self.force_still_filter.first_stage().map(|f| f - cal.force_offset_n - self.seals_n));
+                b.watch_lift(self.force_still_filter.first_stage().map(|f| f - cal.force_offset_n - self.seals_n), up_friction_n);
                 b.lifting()
             }
             None => false,
