@@ -1907,36 +1907,30 @@ fn loads_added_to_hanging_loads(precision: Precision) -> (Vec<(String, Option<f6
     loads_added_after_lift_offs(precision, "loads hanging steadily", &[0.1, 2.0], &[5.0, 12.0])
 }
 
-/// KNOWN GAP, measured (f64 and f32 alike; the same at the code before a
-/// ring's break was read as a lift-off): a load added at rest to one
-/// hanging steadily before any move, 50 % taken to 110 % in 0.1 s at 65° or
-/// 80°, is cut 1.01–1.11 s after its take-up ends (11 of the 72 cases of
-/// 110 %; the longest on the 3 m rope after a lift-off taken up in 2 s).
-/// Nothing reads it as a lift-off: that takes a load rising from an empty
-/// hook, or the break of a ring still followed, and the new load climbs
-/// through the filter's four stages and the stage against the bounce. Tried:
-/// reading as a lift-off any rise of the first filter stage by 10 % of the
-/// load above its 0.5 s average, after 1 s within that band. It cut these
-/// within the second, but a winch started hard pulls that much for a quarter
-/// second: 90 % hoisted hard was cut in 8 of 9 cases (6 of 9,
-/// `hard_hoist_starts_and_stops_stay_as_measured`), and with a 20 % band 85 %
-/// read u 1.011. Reading a rise of 30 % as one (after a second steady within
-/// 10 %) kept the hoists as they are and cut all but one case within the
-/// second (1.02 s), but 85 % hanging at power-up and luffed in 10 s
-/// (`no_false_overload_at_85_percent_*`) read up to u 0.947 where it read
-/// 0.90–0.91.
+/// KNOWN GAP, measured (f64 and f32 alike): a load added at rest to one
+/// hanging steadily before any move, 50 % taken to 110 % in 0.1 s, is cut
+/// within the second but in one case of 72: 1.02 s after its take-up ends,
+/// on the 3 m rope at 65° 5 s after its snatch, whose ring rides on the
+/// swing the boom's give starts (40 % of the load peak to peak) and is
+/// never steady. Elsewhere the rise is read as a lift-off
+/// (`moment_limiter::static_load`, "A load added to one hanging steadily: a
+/// lift-off again"); before, 11 of the 72 were cut 1.01–1.11 s after (the
+/// longest on the 3 m rope at 80° after a lift-off taken up in 2 s), the
+/// load rising through the filter's four stages and the stage against the
+/// bounce.
 #[test]
-#[ignore = "KNOWN GAP: 110 % added in 0.1 s to a load hanging steadily before any move, at 65-80 deg, is cut up to 1.11 s after its take-up"]
+#[ignore = "KNOWN GAP: 110 % added in 0.1 s to a load hanging steadily before any move is cut 1.02 s after its take-up on the 3 m rope at 65 deg, 5 s after its snatch"]
 fn a_load_added_to_a_hanging_load_known_gap() {
     cut_within_1_s_but_at_65_to_80_degrees_in_0_1_s(loads_added_to_hanging_loads(Precision::F64), 1.0, Precision::F64);
 }
 
 /// The known gap above pinned at its measured size: 110 % cut within 1 s
-/// of its take-up's end but taken up in 0.1 s at 65° or 80° (within 1.15 s
-/// there; 1.11 s measured), and 90 % never cut. Measured (f64 and f32):
-/// within 0.94 s elsewhere.
+/// of its take-up's end but taken up in 0.1 s at 65° or 80° (within 1.05 s
+/// there; 1.02 s measured, 1.11 s before a rise from a steady load was read
+/// as a lift-off), and 90 % never cut. Measured (f64 and f32): within
+/// 0.83 s elsewhere (0.94 s before).
 fn loads_added_to_hanging_loads_are_cut(precision: Precision) {
-    cut_within_1_s_but_at_65_to_80_degrees_in_0_1_s(loads_added_to_hanging_loads(precision), 1.15, precision);
+    cut_within_1_s_but_at_65_to_80_degrees_in_0_1_s(loads_added_to_hanging_loads(precision), 1.05, precision);
 }
 
 #[test]
