@@ -1911,8 +1911,8 @@ fn loads_added_to_hanging_loads(precision: Precision) -> (Vec<(String, Option<f6
 /// hanging steadily before any move, 50 % taken to 110 % in 0.1 s, is cut
 /// within the second but in one case of 72: 1.02 s after its take-up ends,
 /// on the 3 m rope at 65° 5 s after its snatch, whose ring rides on the
-/// swing the boom's give starts (40 % of the load peak to peak) and is
-/// never steady. Elsewhere the rise is read as a lift-off
+/// swing the boom's give starts (nearly half the load's pull peak to
+/// peak) and is never steady. Elsewhere the rise is read as a lift-off
 /// (`moment_limiter::static_load`, "A load added to one hanging steadily: a
 /// lift-off again"); before, 11 of the 72 were cut 1.01–1.11 s after (the
 /// longest on the 3 m rope at 80° after a lift-off taken up in 2 s), the

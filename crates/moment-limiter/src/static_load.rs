@@ -689,7 +689,8 @@
 //! 12 s after their lift-off (`loads_added_to_hanging_loads_are_cut_*`) are
 //! cut within the second but in one case of 72: 1.02 s after, on the 3 m
 //! rope at 65° 5 s after its snatch, whose ring rides on the swing the
-//! boom's give starts (40 % of the load peak to peak) and is never steady.
+//! boom's give starts (nearly half the load's pull peak to peak) and is
+//! never steady.
 //! Outside 65°–80° taken up in 0.1 s, within 0.83 s (0.94 s); 90 % never.
 //! The only other figure that moved: 90 % lifted 12 s after an empty-hook
 //! raise on the thesis's rope, an OVERLOAD already
