@@ -1624,13 +1624,10 @@ impl<T: Real> StaticLoadBank<T> {
             // again"). Within the window the lift-off may still be rising.
             let lifting = self.lifting();
             if let Some(trough) = self.follow_ring(f).filter(|_| !lifting) {
-                self.lift_base_n = Some(trough);
-                self.lift_peak_n = Some(f);
-                self.lift_bounced = false;
                 let mean = self.lift_ring_n;
                 self.forget_ring();
                 self.lift_ring_n = mean;
-                self.rise_s = T::lit(0.0);
+                self.lift_off_again(trough, f, T::lit(0.0));
             }
         } else {
             self.forget_ring();
@@ -1660,10 +1657,7 @@ impl<T: Real> StaticLoadBank<T> {
         // a rise widens it no more.
         let (lo_now, hi_now) = (lo.min(f), if steady { hi } else { hi.max(f) });
         if steady && f > hi + (lo - empty) * T::lit(STEADY_RISE) + up_friction_n {
-            // Read as a lift-off from the band's low.
-            self.lift_peak_n = Some(f);
-            self.lift_bounced = false;
-            self.rise_s = T::lit(-STEADY_CONFIRM_S);
+            self.lift_off_again(lo, f, T::lit(-STEADY_CONFIRM_S));
             self.steady_s = T::lit(0.0);
         } else if f <= hi_now && hi_now - lo_now <= (lo_now - empty) * T::lit(STEADY_BAND) {
             self.lift_base_n = Some(lo_now);
@@ -1677,6 +1671,19 @@ impl<T: Real> StaticLoadBank<T> {
         } else {
             self.start_steady(f);
         }
+    }
+
+    /// Reads a load added to the one hanging as a lift-off from the force
+    /// `base_n` it rose from, the still force's first stage now `f` (N):
+    /// the lift window's clock set to `rise_s` (0 opens it, below 0 is the
+    /// wait before it; see the module doc, "A load added while a lift-off
+    /// rings: a lift-off again" and "A load added to one hanging steadily:
+    /// a lift-off again").
+    fn lift_off_again(&mut self, base_n: T, f: T, rise_s: T) {
+        self.lift_base_n = Some(base_n);
+        self.lift_peak_n = Some(f);
+        self.lift_bounced = false;
+        self.rise_s = rise_s;
     }
 
     /// Starts a steady band at the still force's first stage `f` (N).
