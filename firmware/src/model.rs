@@ -5,11 +5,12 @@
 //! out (the piston force and the rear-jack reaction are quadratics in the load,
 //! the rate enters as ω²), so the host tabulates them with the full f64 model
 //! every 0.5° and the image carries the table as f32 constants
-//! (`crane_model::loads::load_table`, 184 rows × 13 columns, 9.4 KB; checked against
+//! (`crane_model::loads::load_table`, 184 rows × 11 columns, 7.9 KB; checked against
 //! the full model and against a fresh generation by tests). One control cycle
 //! asks the table once ([`crane_model::loads::load_model::HookLoadModel::cycle_terms`]):
-//! two interpolations and one quadratic root, no trigonometry, no f64, no
-//! panic (scripts/check-cycle-image.sh proves the last three on the image).
+//! two interpolations, one quadratic root and tan θ1 from the f32 polynomial
+//! sine and cosine the pendulums use; no libm trigonometry, no f64, no panic
+//! (scripts/check-cycle-image.sh proves the last three on the image).
 //! `crane-sim replay` runs the very same table in f32, so their timelines agree
 //! sample for sample.
 

@@ -57,12 +57,10 @@ pub mod column {
     pub const JACK_RATE2_PER_KG2: usize = 9;
     /// Hook radius R (m, eq. 4.3).
     pub const RADIUS: usize = 10;
-    /// sin θ1.
-    pub const SIN: usize = 11;
-    /// cos θ1.
-    pub const COS: usize = 12;
-    /// Number of columns.
-    pub const COUNT: usize = 13;
+    /// Number of columns. (tan θ1 is no column: the cycle computes it from
+    /// the angle, [`crate::Real::sin_cos_own`], which the pendulums link
+    /// anyway; as two columns it took 1 472 B of the controller's flash.)
+    pub const COUNT: usize = 11;
 }
 
 /// One row: the columns of [`column`](mod@column) at one boom angle.
@@ -122,9 +120,6 @@ pub fn generate_row<const M: usize>(model: &CraneModel<f64, M>, angle_rad: f64) 
     set(JACK_RATE2_PER_KG, per_rate2.per_kg);
     set(JACK_RATE2_PER_KG2, per_rate2.per_kg2);
     set(RADIUS, model.radius_m(angle_rad));
-    let (sin, cos) = crate::Real::sin_cos_own(angle_rad);
-    set(SIN, sin);
-    set(COS, cos);
     Ok(row)
 }
 
@@ -164,8 +159,9 @@ pub fn write_const<W: core::fmt::Write>(rows: &[Row; KNOTS], name: &str, out: &m
 }
 
 /// The limiter's crane model on the controller: rows of [`column`](mod@column)s at knots
-/// `STEP_DEG` apart, interpolated by a cubic (f32, no trigonometry, no
-/// multibody code). Angles outside the knots are out of reach (a FAULT).
+/// `STEP_DEG` apart, interpolated by a cubic, and tan θ1 from the angle
+/// ([`crate::Real::sin_cos_own`]; f32, no libm, no multibody code). Angles
+/// outside the knots are out of reach (a FAULT).
 #[derive(Debug, Clone, Copy)]
 pub struct LoadTable {
     rows: &'static [Row; KNOTS],
@@ -265,7 +261,10 @@ impl LoadTable {
         Ok(LoadTerms {
             piston_force: quadratic(&row, PISTON_AT_ZERO, PISTON_PER_KG, PISTON_PER_KG2),
             piston_force_per_boom_accel: get(&row, PER_BOOM_ACCEL),
-            tan_angle: get(&row, SIN) / get(&row, COS),
+            tan_angle: {
+                let (sin, cos) = crate::Real::sin_cos_own(angle_rad);
+                sin / cos
+            },
         })
     }
 
