@@ -1841,11 +1841,16 @@ fn within_a_second(delay_s: f64) -> bool {
     delay_s <= 1.0 + 1e-9
 }
 
-/// KNOWN GAP, measured (f64 and f32): a load added at rest 1.5–3 s after
-/// 50 % or 90 % of rated was snatched, before any move, at 65° and 80°,
-/// taken to 110 % in 0.1 s, is cut 1.01–1.14 s after its take-up ends (on
-/// the 3 m rope; at 65° 1.5 s after, on the thesis's and the longest rope
-/// too). Where the snatch's ring still decays when the load is added, and
+/// KNOWN GAP, measured (f64 and f32): 90 % of rated snatched in 0.1 s on
+/// the 3 m rope at 80°, before any move, and taken to 110 % in 0.1 s 3 s
+/// later is cut 1.05 s after its take-up ends. The force rings from 150
+/// to 200 kN, a third of the load's part peak to peak, and the load added
+/// lifts it by a fifth of that part: no rise of it passes the ring's
+/// crests by the margin a winch's pull asks (`moment_limiter::static_load`,
+/// "A load added to one that rings on: a rise over all it did"). Until
+/// that rise was read, 50 % taken to 110 % 1.5–3 s after at 65° was cut
+/// 1.01–1.14 s after too (the 3 m rope; 1.5 s after, the thesis's and the
+/// longest rope). Where the snatch's ring still decays when the load is added, and
 /// the lift window has closed, the ring's break reads the load as a lift-off
 /// ("A load added while a lift-off rings: a lift-off again" in
 /// `moment_limiter::static_load`): 50 % taken to 110 % 3 s after on the 3 m
@@ -1853,11 +1858,12 @@ fn within_a_second(delay_s: f64) -> bool {
 /// take-up and from 110 to 260 kN after, was cut 1.20 s after, now within
 /// the second. On the 3 m rope at 65° the ring rides on the swing that the
 /// boom's give starts and breaks within the lift window, so nothing follows
-/// it when the load is added; reading a break within the window as a
-/// lift-off too, tried, cut 110 % snatched there 1.04 s after it left the
-/// ground (0.91 s) and made 90 % an OVERLOAD in 4 of 40 cases.
+/// it when the load is added (the span's rise reads it now); reading a
+/// break within the window as a lift-off too, tried, cut 110 % snatched
+/// there 1.04 s after it left the ground (0.91 s) and made 90 % an
+/// OVERLOAD in 4 of 40 cases.
 #[test]
-#[ignore = "KNOWN GAP: 110 % added in 0.1 s 1.5-3 s after a lift-off at 65-80 deg is cut up to 1.14 s after its take-up"]
+#[ignore = "KNOWN GAP: 90 % snatched at 80 deg on the 3 m rope and taken to 110 % in 0.1 s 3 s later is cut 1.05 s after its take-up"]
 fn a_load_added_to_a_ringing_lift_off_known_gap() {
     cut_within_1_s_but_at_65_to_80_degrees_in_0_1_s(loads_added_to_ringing_lift_offs(Precision::F64), 1.0, Precision::F64);
 }
@@ -1865,11 +1871,11 @@ fn a_load_added_to_a_ringing_lift_off_known_gap() {
 /// Asserts the loads added after lift-offs ([`loads_added_after_lift_offs`]:
 /// `over`, each 110 % with its cut's delay; `under`, the 90 % cut): 110 % cut
 /// within 1 s of its take-up's end, but within `gap_s` where it is taken up
-/// in 0.1 s at 65° or 80° (the known gaps; a `gap_s` of 1 asks the second of
-/// every case), and 90 % never cut.
+/// in 0.1 s at 65° or 80° (the known gap; a `gap_s` of 1 asks the second of
+/// every case; to the sample, as [`within_a_second`]), and 90 % never cut.
 fn cut_within_1_s_but_at_65_to_80_degrees_in_0_1_s((over, under): (Vec<(String, Option<f64>)>, Vec<String>), gap_s: f64, precision: Precision) {
     let gap = |n: &str| (n.starts_with("65 deg") || n.starts_with("80 deg")) && n.contains(", in 0.1 s,");
-    let late: Vec<_> = over.iter().filter(|(n, c)| !c.is_some_and(|c| within_a_second(c) || (gap(n) && c <= gap_s))).collect();
+    let late: Vec<_> = over.iter().filter(|(n, c)| !c.is_some_and(|c| within_a_second(c) || (gap(n) && c <= gap_s + 1e-9))).collect();
     let elsewhere = over.iter().filter(|(n, _)| !gap(n)).map(|(_, c)| c.unwrap_or(f64::INFINITY)).fold(f64::NEG_INFINITY, f64::max);
     println!("{precision:?}: outside the known gap, 110 % cut at most {elsewhere:.2} s after the take-up ends");
     assert!(late.is_empty() && under.is_empty(), "110 % cut late: {late:#?}; 90 % cut: {under:#?}");
@@ -1878,16 +1884,17 @@ fn cut_within_1_s_but_at_65_to_80_degrees_in_0_1_s((over, under): (Vec<(String, 
 /// A load added at rest while a lift-off still rings, before any move: the
 /// ring's cap ("A lift-off: no higher than its ring") lowers a reading, and
 /// must not keep a heavier load waiting. 110 % is cut within 1 s of its
-/// take-up's end but in the known gap above (there within 1.15 s; 1.14 s
-/// measured, 1.20 s before a ring's break was read as a lift-off), and 90 %
-/// is never cut. Measured (f64 and f32): within 0.97 s elsewhere (1.00 s
-/// before). Where the cap held the reading down, 90 % snatched at 20° and
+/// take-up's end but in the known gap above (there within 1.05 s, as
+/// measured; 1.14 s before a rise over the ring's span was read as a
+/// lift-off, 1.20 s before a ring's break was), and 90 % is never cut.
+/// Measured (f64 and f32): within 0.90 s elsewhere (0.97 s before the
+/// span's rise, 1.00 s before the break). Where the cap held the reading down, 90 % snatched at 20° and
 /// taken to 110 % 1 s later is cut 0.76 s after (0.20 s before the cap, when
 /// 90 % alone read near the cut: at 20° it was cut before any load was added
 /// in 14 of the 30 cases of 90 % taken to 110 %, the known gap of the snatch
 /// that the cap closed).
 fn loads_added_to_ringing_lift_offs_are_cut(precision: Precision) {
-    cut_within_1_s_but_at_65_to_80_degrees_in_0_1_s(loads_added_to_ringing_lift_offs(precision), 1.15, precision);
+    cut_within_1_s_but_at_65_to_80_degrees_in_0_1_s(loads_added_to_ringing_lift_offs(precision), 1.05, precision);
 }
 
 #[test]
@@ -1907,30 +1914,22 @@ fn loads_added_to_hanging_loads(precision: Precision) -> (Vec<(String, Option<f6
     loads_added_after_lift_offs(precision, "loads hanging steadily", &[0.1, 2.0], &[5.0, 12.0])
 }
 
-/// KNOWN GAP, measured (f64 and f32 alike): a load added at rest to one
-/// hanging steadily before any move, 50 % taken to 110 % in 0.1 s, is cut
-/// within the second but in one case of 72: 1.02 s after its take-up ends,
-/// on the 3 m rope at 65° 5 s after its snatch, whose ring rides on the
-/// swing the boom's give starts (nearly half the load's pull peak to
-/// peak) and is never steady. Elsewhere the rise is read as a lift-off
+/// A load added at rest to one hanging steadily before any move, 50 % or
+/// 90 % taken to 110 % and 60 % to 90 %: 110 % cut within 1 s of its
+/// take-up's end, 90 % never. A rise out of the band the load held steadily
+/// for a second, or over all the force did since the lift-off's first crest
+/// where its ring rings on, is read as a lift-off
 /// (`moment_limiter::static_load`, "A load added to one hanging steadily: a
-/// lift-off again"); before, 11 of the 72 were cut 1.01–1.11 s after (the
+/// lift-off again" and "A load added to one that rings on: a rise over all
+/// it did"). Measured (f64 and f32 alike): within 0.73 s. Before the steady
+/// band, 11 of the 72 cases of 110 % were cut 1.01–1.11 s after (the
 /// longest on the 3 m rope at 80° after a lift-off taken up in 2 s), the
 /// load rising through the filter's four stages and the stage against the
-/// bounce.
-#[test]
-#[ignore = "KNOWN GAP: 110 % added in 0.1 s to a load hanging steadily before any move is cut 1.02 s after its take-up on the 3 m rope at 65 deg, 5 s after its snatch"]
-fn a_load_added_to_a_hanging_load_known_gap() {
-    cut_within_1_s_but_at_65_to_80_degrees_in_0_1_s(loads_added_to_hanging_loads(Precision::F64), 1.0, Precision::F64);
-}
-
-/// The known gap above pinned at its measured size: 110 % cut within 1 s
-/// of its take-up's end but taken up in 0.1 s at 65° or 80° (within 1.05 s
-/// there; 1.02 s measured, 1.11 s before a rise from a steady load was read
-/// as a lift-off), and 90 % never cut. Measured (f64 and f32): within
-/// 0.83 s elsewhere (0.94 s before).
+/// bounce; before the span, one: 1.02 s after, on the 3 m rope at 65° 5 s
+/// after its snatch, whose ring rides on the swing the boom's give starts
+/// (nearly half the load's pull peak to peak) and is never steady.
 fn loads_added_to_hanging_loads_are_cut(precision: Precision) {
-    cut_within_1_s_but_at_65_to_80_degrees_in_0_1_s(loads_added_to_hanging_loads(precision), 1.05, precision);
+    cut_within_1_s_but_at_65_to_80_degrees_in_0_1_s(loads_added_to_hanging_loads(precision), 1.0, precision);
 }
 
 #[test]
