@@ -713,8 +713,9 @@
 //! So from a lift-off's first crest on, before any move, the watch also
 //! keeps the **span** of f₁ (`widen_span`): its lowest s_lo and its highest
 //! s_hi since. A crest over s_hi joins the span only once f₁ has come back
-//! from it by half the rise below (or into the span): a rise that goes on,
-//! ringing as it rises, is measured against the top before it. Once the
+//! from it by ½·[`STEADY_RISE`]·(s_lo − F_0), half the margin below (or
+//! into the span): a rise that goes on, ringing as it rises, is measured
+//! against the top before it. Once the
 //! span is [`STEADY_S`] old, a rise
 //!
 //! f₁ > s_hi + [`STEADY_RISE`]·(s_lo − F_0) + F_up(f₁)
@@ -727,7 +728,7 @@
 //! the lift window closes: from there, a load added 1.5 s after its snatch
 //! would find a span 0.3 s old.
 //!
-//! A crest joins the span once f₁ has come back by half the rise, not at
+//! A crest joins the span once f₁ has come back by half the margin, not at
 //! once: joined at the first sample f₁ fell (tried), the field suite read
 //! as now, but 3 t added to 3 t that rang on (the test below), the new
 //! ring against the old, stalled on its way up, set the top there and was
@@ -1784,8 +1785,8 @@ impl<T: Real> StaticLoadBank<T> {
         }
         self.span_lo_n = self.span_lo_n.min(f);
         // A crest over the top widens the span once the force has come
-        // back from it by half the rise read as a lift-off, or into the
-        // span: a rise that goes on, however it rings, is measured against
+        // back from it by half the margin of a rise read as a lift-off, or
+        // into the span: a rise that goes on, however it rings, is measured against
         // the top before it.
         let part = self.span_lo_n - self.empty_hook_n.unwrap_or(self.span_lo_n);
         self.span_crest_n = self.span_crest_n.max(f);
