@@ -5,7 +5,7 @@
 use std::path::Path;
 
 mod common;
-use common::{bin, json, replay};
+use common::{bin, first_event, json, replay};
 
 fn crane_sim(args: &[&str]) -> std::process::Output {
     bin().args(args).output().expect("runs")
@@ -208,14 +208,7 @@ fn added_load_is_cut_within_1_s_of_its_take_up(name: &str, load_kg: f64) {
     let rows = csv(&log);
     let taken_up = rows.iter().find(|r| r[4] >= load_kg).map(|r| r[0]).expect("the second take-up");
     let report = json(&replay(&log, &["--json"]));
-    let events = &report["events"];
-    let cut = events
-        .as_array()
-        .expect("events")
-        .iter()
-        .find(|e| e["state"] == "OVERLOAD")
-        .and_then(|e| e["t_s"].as_f64())
-        .unwrap_or_else(|| panic!("no OVERLOAD: {events}"));
+    let cut = first_event(report["events"].as_array().expect("events"), "OVERLOAD")["t_s"].as_f64().expect("t_s");
     assert!(cut > taken_up - 0.1 && cut - taken_up <= 1.0, "{name}: cut at {cut} s, the take-up ended at {taken_up} s");
 }
 

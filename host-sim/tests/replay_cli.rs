@@ -2,7 +2,7 @@
 //! binary, the example logs, malformed logs, exit codes (SPEC §5).
 
 mod common;
-use common::{bin, example, json, replay, text};
+use common::{bin, example, first_event, json, replay, text};
 
 #[test]
 fn safe_lift_exits_0_and_stays_normal() {
@@ -57,17 +57,16 @@ fn a_logger_dropout_is_a_fault_and_the_overload_still_comes_on_time() {
         json(&out)["events"].as_array().unwrap().clone()
     };
     let at = |e: &serde_json::Value| e["t_s"].as_f64().unwrap();
-    let first = |es: &[serde_json::Value], state: &str| es.iter().find(|e| e["state"] == state).cloned().unwrap_or_else(|| panic!("no {state} in {es:#?}"));
     let (holed, clean) = (events("logger_dropout.csv"), events("overload_lowering.csv"));
     let states: Vec<&str> = holed.iter().map(|e| e["state"].as_str().unwrap()).collect();
     assert_eq!(states, ["NORMAL", "FAULT", "WARNING", "OVERLOAD"], "{holed:#?}");
-    let fault = first(&holed, "FAULT");
-    assert!((at(&fault) - 5.5).abs() < 1e-9, "{fault}");
+    let fault = first_event(&holed, "FAULT");
+    assert!((at(fault) - 5.5).abs() < 1e-9, "{fault}");
     assert_eq!(fault["fault"], "time gap of 0.520 s");
-    assert!(at(&holed[2]) - at(&fault) <= 1.1, "FAULT held {:.2} s", at(&holed[2]) - at(&fault));
-    let (cut, clean_cut) = (first(&holed, "OVERLOAD"), first(&clean, "OVERLOAD"));
-    println!("OVERLOAD at {:.2} s with the dropout, {:.2} s without", at(&cut), at(&clean_cut));
-    assert!(at(&cut) <= at(&clean_cut) + 1e-9, "cut at {} s, {} s without the gap", at(&cut), at(&clean_cut));
+    assert!(at(&holed[2]) - at(fault) <= 1.1, "FAULT held {:.2} s", at(&holed[2]) - at(fault));
+    let (cut, clean_cut) = (first_event(&holed, "OVERLOAD"), first_event(&clean, "OVERLOAD"));
+    println!("OVERLOAD at {:.2} s with the dropout, {:.2} s without", at(cut), at(clean_cut));
+    assert!(at(cut) <= at(clean_cut) + 1e-9, "cut at {} s, {} s without the gap", at(cut), at(clean_cut));
     let read = cut["load_kg"].as_f64().unwrap() / 8000.0;
     assert!((1.0..=1.10).contains(&read), "{read}");
 }

@@ -8,7 +8,7 @@ use std::process::{Command, Output, Stdio};
 use moment_limiter::tools::log_format::parse_time_us;
 
 mod common;
-use common::{bin, example, json, replay, text};
+use common::{bin, example, first_event, json, replay, text};
 
 /// Rewrites the `t_s` of every data row of `log` (first column) with `f`
 /// applied to its exact microseconds; writes the result to `out`.
@@ -196,7 +196,7 @@ fn jittered_lowering(jitter_us: u32) -> ((u64, u64), (f64, f64), (f64, f64)) {
     let run = |log: &Path, name: &str| {
         let trace = dir.path().join(name);
         let out = replay(log, &["--json", "--calibration", cal.to_str().unwrap(), "--trace", trace.to_str().unwrap()]);
-        let first = states(&json(&out)).iter().find(|e| e.1 == "OVERLOAD").map(|e| e.0).expect("cut");
+        let first = first_event(json(&out)["events"].as_array().expect("events"), "OVERLOAD")["sample"].as_u64().expect("sample");
         let (mut outside, mut all) = (0.0f64, 0.0f64);
         for line in std::fs::read_to_string(&trace).unwrap().lines().filter(|l| !l.starts_with('#')).skip(1) {
             let f: Vec<&str> = line.split(',').collect();

@@ -62,3 +62,12 @@ pub fn json(out: &Output) -> serde_json::Value {
     serde_json::from_slice(&out.stdout)
         .unwrap_or_else(|e| panic!("bad JSON ({e}): {}", text(&out.stdout)))
 }
+
+/// The first of `replay --json`'s `events` that enters `state`; a panic
+/// that lists them all when none does.
+pub fn first_event<'a>(events: &'a [serde_json::Value], state: &str) -> &'a serde_json::Value {
+    events
+        .iter()
+        .find(|e| e["state"] == state)
+        .unwrap_or_else(|| panic!("no {state} in {events:#?}"))
+}
