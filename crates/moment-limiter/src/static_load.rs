@@ -1702,15 +1702,15 @@ impl<T: Real> StaticLoadBank<T> {
                 self.forget_ring();
                 self.lift_ring_n = mean;
                 self.lift_off_again(trough, f, T::lit(0.0));
-            } else if self.lift_bounced {
-                self.widen_span(f);
             }
         } else {
             self.forget_ring();
             self.watch_steady(f, up_friction_n);
-            if self.lift_bounced && !self.moved {
-                self.widen_span(f);
-            }
+        }
+        // The span runs from a lift-off's first crest (a lift-off read
+        // again above has not bounced yet), before any move.
+        if self.lift_bounced && !self.moved {
+            self.widen_span(f);
         }
     }
 
@@ -1786,8 +1786,8 @@ impl<T: Real> StaticLoadBank<T> {
         self.span_lo_n = self.span_lo_n.min(f);
         // A crest over the top widens the span once the force has come
         // back from it by half the margin of a rise read as a lift-off, or
-        // into the span: a rise that goes on, however it rings, is measured against
-        // the top before it.
+        // into the span: a rise that goes on, however it rings, is measured
+        // against the top before it.
         let part = self.span_lo_n - self.empty_hook_n.unwrap_or(self.span_lo_n);
         self.span_crest_n = self.span_crest_n.max(f);
         if f <= self.span_hi_n || f < self.span_crest_n - part.max(T::lit(0.0)) * T::lit(0.5 * STEADY_RISE) {
@@ -2765,10 +2765,8 @@ mod tests {
         for decay in [0.1, 0.3] {
             for at in [4.5, 5.0, 6.0] {
                 let load = |t: f64| ringing(t, decay) + if t < at { 0.0 } else { ringing(t - at + 3.0, decay) / 2.0 };
-                let seen = |c: &[LiftCycle]| c.iter().find(|c| c.t >= at && c.load_kg >= 0.95 * 4500.0).map_or(f64::INFINITY, |c| c.t - at);
-                let highest = |c: &[LiftCycle]| c.iter().filter(|c| c.t >= at).map(|c| c.load_kg).fold(0.0, f64::max) / 4500.0;
-                let (w, u) = (lift_off_cycles_for(&load, true, 900), lift_off_cycles_for(&load, false, 900));
-                assert!(seen(&w) + 0.09 <= seen(&u) && highest(&w) <= 1.03, "decay {decay}, added at {at} s: seen {:.2} s after ({:.2} s without the watch), read up to {:.3}", seen(&w), seen(&u), highest(&w));
+                let a = added_load(&load, at, 4500.0, 900);
+                assert!(a.seen_s + 0.09 <= a.unwatched_s && a.highest <= 1.03, "decay {decay}, added at {at} s: seen {:.2} s after ({:.2} s without the watch), read up to {:.3}", a.seen_s, a.unwatched_s, a.highest);
             }
         }
     }
@@ -2788,10 +2786,8 @@ mod tests {
     fn a_load_added_to_a_steadily_hanging_one_is_read_as_a_lift_off() {
         for at in [8.0, 10.0] {
             let load = |t: f64| ringing(t, 1.0) + if t < at { 0.0 } else { ringing(t - at + 3.0, 1.0) };
-            let seen = |c: &[LiftCycle]| c.iter().find(|c| c.t >= at && c.load_kg >= 0.95 * 6000.0).map_or(f64::INFINITY, |c| c.t - at);
-            let highest = |c: &[LiftCycle]| c.iter().filter(|c| c.t >= at).map(|c| c.load_kg).fold(0.0, f64::max) / 6000.0;
-            let (w, u) = (lift_off_cycles_for(&load, true, 1200), lift_off_cycles_for(&load, false, 1200));
-            assert!(seen(&w) + 0.09 <= seen(&u) && highest(&w) <= 1.03, "added at {at} s: seen {:.2} s after ({:.2} s without the watch), read up to {:.3}", seen(&w), seen(&u), highest(&w));
+            let a = added_load(&load, at, 6000.0, 1200);
+            assert!(a.seen_s + 0.09 <= a.unwatched_s && a.highest <= 1.03, "added at {at} s: seen {:.2} s after ({:.2} s without the watch), read up to {:.3}", a.seen_s, a.unwatched_s, a.highest);
         }
         let winch = |t: f64| ringing(t, 1.0) * if (10.0..10.25).contains(&t) { 1.2 } else { 1.0 };
         assert!(lift_off_cycles_for(&winch, true, 1200).iter().all(|c| !c.lifting || c.t < 10.0), "a winch's pull read as a lift-off");
@@ -2823,12 +2819,34 @@ mod tests {
         assert!(lift_off_cycles_for(&rings_on, true, 1200).iter().all(|c| !c.lifting || c.t < window_ends), "the ring read as a lift-off");
         for at in [6.0, 8.0] {
             let load = |t: f64| rings_on(t) + if t < at { 0.0 } else { ringing(t - at + 3.0, 1.0) };
-            let seen = |c: &[LiftCycle]| c.iter().find(|c| c.t >= at && c.load_kg >= 0.95 * 6000.0).map_or(f64::INFINITY, |c| c.t - at);
-            let highest = |c: &[LiftCycle]| c.iter().filter(|c| c.t >= at).map(|c| c.load_kg).fold(0.0, f64::max) / 6000.0;
-            let (w, u) = (lift_off_cycles_for(&load, true, 1200), lift_off_cycles_for(&load, false, 1200));
-            let read = w.iter().any(|c| c.lifting && c.t >= at);
-            println!("added at {at} s: seen {:.2} s after ({:.2} s without the watch), read up to {:.3}", seen(&w), seen(&u), highest(&w));
-            assert!(read && seen(&w) + 0.09 <= seen(&u) && highest(&w) <= 1.03, "added at {at} s: read as a lift-off {read}, seen {:.2} s after ({:.2} s without the watch), read up to {:.3}", seen(&w), seen(&u), highest(&w));
+            let a = added_load(&load, at, 6000.0, 1200);
+            println!("added at {at} s: seen {:.2} s after ({:.2} s without the watch), read up to {:.3}", a.seen_s, a.unwatched_s, a.highest);
+            assert!(a.lifting && a.seen_s + 0.09 <= a.unwatched_s && a.highest <= 1.03, "added at {at} s: read as a lift-off {}, seen {:.2} s after ({:.2} s without the watch), read up to {:.3}", a.lifting, a.seen_s, a.unwatched_s, a.highest);
+        }
+    }
+
+    /// How the bank reads a load added at `at` s to the hook's `load` (kg
+    /// at t s), `total_kg` on the hook with it, over `cycles` cycles
+    /// ([`lift_off_cycles_for`]).
+    struct AddedLoad {
+        /// When the reading first reaches 0.95 of `total_kg` (s after `at`;
+        /// infinite if never), with the watch and without it.
+        seen_s: f64,
+        unwatched_s: f64,
+        /// The highest reading from `at` on, of `total_kg` (with the watch).
+        highest: f64,
+        /// Whether the bank reads a lift-off from `at` on (with the watch).
+        lifting: bool,
+    }
+
+    fn added_load(load: &dyn Fn(f64) -> f64, at: f64, total_kg: f64, cycles: u16) -> AddedLoad {
+        let seen = |c: &[LiftCycle]| c.iter().find(|c| c.t >= at && c.load_kg >= 0.95 * total_kg).map_or(f64::INFINITY, |c| c.t - at);
+        let (w, u) = (lift_off_cycles_for(load, true, cycles), lift_off_cycles_for(load, false, cycles));
+        AddedLoad {
+            seen_s: seen(&w),
+            unwatched_s: seen(&u),
+            highest: w.iter().filter(|c| c.t >= at).map(|c| c.load_kg).fold(0.0, f64::max) / total_kg,
+            lifting: w.iter().any(|c| c.lifting && c.t >= at),
         }
     }
 
