@@ -335,6 +335,9 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         // start puts it in the force before the angle shows it.
         let lifting = match self.bank.as_mut() {
             Some(b) => {
+                if self.seals_n > T::lit(0.0) {
+                    b.raise_starts();
+                }
                 b.watch_lift(self.force_still_filter.first_stage().map(|f| f - cal.force_offset_n - self.seals_n), up_friction_n);
                 b.lifting()
             }
