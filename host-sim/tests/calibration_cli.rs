@@ -464,6 +464,45 @@ fn keeps_the_default_lag_when_the_runs_do_not_show_it() {
     assert!((key(&j, "angle_sensor_lag_s") - PENDULUM_2HZ_07_LAG_S).abs() < 1e-12, "{j}");
 }
 
+/// The seals' release after a raise, read from unloaded runs resting 5 s
+/// after their stops (`moment_limiter::seal_release`), for seals that let
+/// go at once, over half a second, over 3 s and never (stuck): counted from
+/// when the limiter sees the stop (about a second late), it comes out
+/// shorter than the seals' own, in order, and no shorter than 0.2 s
+/// (`moment_limiter::seal_release::RELEASE_CANDIDATES_S`). Without the
+/// rest it is not observable and the file holds the default 0.5 s.
+#[test]
+fn learns_the_seals_release_after_a_raise_from_the_rest_after_the_stop() {
+    let dir = tempfile::tempdir().unwrap();
+    // (seals' release, learned at least, at most).
+    let mut learned = Vec::new();
+    for (release, lo, hi) in [("0", 0.2, 0.2), ("0.5", 0.2, 0.3), ("3", 1.0, 3.0), ("60", 20.0, 60.0)] {
+        let extra = ["--hold-after-s", "5", "--standstill-release-s", release];
+        let up = synth_run(dir.path(), &format!("up_{release}.csv"), "up", "0", "10", "1", &extra);
+        let down = synth_run(dir.path(), &format!("down_{release}.csv"), "down", "0", "10", "2", &extra);
+        let cal = dir.path().join(format!("cal_{release}.json"));
+        let out = calibrate(&[&up, &down], &cal);
+        assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+        let stdout = text(&out.stdout);
+        let j = read_json(&cal);
+        let tau = key(&j, "seal_release_up_s");
+        println!("seals releasing over {release} s: learned {tau} s");
+        assert!(stdout.contains("seals' release after a raise") && stdout.contains("s learned"), "{stdout}");
+        assert!((lo..=hi).contains(&tau), "seals releasing over {release} s: learned {tau} s, not in {lo}..{hi}\n{stdout}");
+        assert_eq!(key(&j, "version"), 5.0);
+        learned.push(tau);
+    }
+    assert!(learned.windows(2).all(|w| w[0] <= w[1]), "{learned:?}");
+    // The default 0.3 s after the stop: nothing to read the release from.
+    let (up, down) = unloaded_runs(dir.path(), &[]);
+    let cal = dir.path().join("cal_short.json");
+    let out = calibrate(&[&up, &down], &cal);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let stdout = text(&out.stdout);
+    assert!(stdout.contains("seals' release NOT observable") && stdout.contains("default 0.50 s kept"), "{stdout}");
+    assert_eq!(key(&read_json(&cal), "seal_release_up_s"), 0.5);
+}
+
 #[test]
 fn a_version_1_calibration_file_still_replays_as_constant_friction() {
     let dir = tempfile::tempdir().unwrap();

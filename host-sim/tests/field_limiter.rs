@@ -315,10 +315,16 @@ fn frame<T: Real>(r: &SynthRow) -> Frame<T> {
     }
 }
 
+/// Rest after each calibration run's stop (s), as the campaign's: the
+/// seals' release after the up run shows there
+/// (`moment_limiter::seal_release`).
+const CALIBRATION_REST_AFTER_S: f64 = 5.0;
+
 /// The calibration `crane-sim calibrate` learns from the crane's unloaded 10 s
-/// cycloidal up and down runs: the angle sensor's lag first (unless
-/// [`LEARN_LAG`] is off: the limiter's default), then the friction law
-/// with it.
+/// cycloidal up and down runs ([`CALIBRATION_REST_AFTER_S`] at rest after
+/// each): the angle sensor's lag first (unless [`LEARN_LAG`] is off: the
+/// limiter's default), then the friction law with it, and the seals'
+/// release after the raise.
 fn calibration_with<T: Real, M: HookLoadModel<T> + Clone>(model_l: &M, seals: Seals) -> Calibration<T> {
     let mut logs = Vec::new();
     let mut runs = vec![(Direction::Up, 11, 10.0), (Direction::Down, 12, 10.0)];
@@ -327,7 +333,7 @@ fn calibration_with<T: Real, M: HookLoadModel<T> + Clone>(model_l: &M, seals: Se
     }
     for (dir, seed, duration_s) in runs {
         let mut m = Maneuver::thesis(0.0, duration_s, RampShape::Cycloidal, dir).unwrap();
-        m.settle_s = 1.0;
+        m.settle_s = CALIBRATION_REST_AFTER_S;
         let (options, dt) = options_for_rate(rate_hz());
         let mut samples = simulate(crane(), &m, &options).expect("simulation");
         in_the_second_formulation(&mut samples, m.rope);
@@ -359,7 +365,7 @@ fn calibration_with<T: Real, M: HookLoadModel<T> + Clone>(model_l: &M, seals: Se
     };
     let cal = learn(SensorCandidate::first_order(lag), SteadyMotion::standard(), &logs).finish(50).unwrap();
     println!(
-        "calibration ({seals:?} seals, sensor {:?} {:?}): lag {lag:.3} s, up {:.0} N + {:.4}·F + {:.0}·ω, down {:.0} N + {:.4}·F + {:.0}·ω, offset {:.0} N",
+        "calibration ({seals:?} seals, sensor {:?} {:?}): lag {lag:.3} s, up {:.0} N + {:.4}·F + {:.0}·ω, down {:.0} N + {:.4}·F + {:.0}·ω, offset {:.0} N, release after a raise {:?} s",
         SENSOR_LAG_S.with(|l| l.get()),
         PENDULUM_2ND.with(|p| p.get()),
         cal.friction_up_n,
@@ -368,7 +374,8 @@ fn calibration_with<T: Real, M: HookLoadModel<T> + Clone>(model_l: &M, seals: Se
         cal.friction_down_n,
         cal.friction_down_per_force,
         cal.friction_down_per_rate,
-        cal.force_offset_n
+        cal.force_offset_n,
+        cal.seal_release_up_s.map(|s| s.to_f64())
     );
     Calibration { angle_sensor_lag_s: Some(lag), ..cal }
 }
@@ -2582,6 +2589,8 @@ fn a_load_added_at_rest_after_a_move_on_a_slow_sensor() {
 /// (`moment_limiter::static_load`), the
 /// 3 m rope at 60° with the seals' friction is seen after 0.86–0.91 s (1.88
 /// before) and cut at +0.96 s; with constant friction still after 1.88 s.
+/// (With the seals' release after a raise learned down to 0.01 s, tried,
+/// that case was cut at +0.96 s too, `moment_limiter::seal_release`.)
 /// The 13 m rope at 80° and the 3 m one at 60° with constant friction are
 /// seen within 1 s when the stop's friction does not count against the
 /// ropes' consistency (see
@@ -2734,18 +2743,21 @@ fn a_load_added_at_rest_on_the_paid_out_rope_f32() {
     load_added_at_rest_on_the_paid_out_rope(Precision::F32, &PAID_OUT_SEEN, 3.0);
 }
 
-/// KNOWN GAP, measured (f64): 3 s after a raise to 70° or 80° on the
-/// paid-out rope, 110 % is cut only when a crest and a trough of its swing
-/// have turned (`moment_limiter::swing_midrange`), 10.1–10.3 s after the
-/// take-up (6.0 s after 20° → 70° with the seals' friction; 50° → 80° with
-/// them is seen at once; 12.5–14.3 s before the midrange, when the mean over
-/// one swing period weighed it), and after
-/// 20° → 50° 1.01 s after (0.01 s over the bound). The paid-out
+/// KNOWN GAP, measured (f64): 3 s after a raise 20° → 70° on the paid-out
+/// rope with the seals' friction, 110 % is cut only when a crest and a
+/// trough of its swing have turned (`moment_limiter::swing_midrange`), 6.07 s
+/// after the take-up, and after 20° → 50° 1.01 s after (0.01 s over the
+/// bound). Since the calibration learns the seals' release after a raise
+/// (`moment_limiter::seal_release`; 0.2 s for these seals, which let go at
+/// the stop: the shortest it learns), the raises to 80° and 20° → 70° with constant friction are
+/// cut 0.81–0.88 s after the take-up. What follows is what kept them late
+/// before (10.1–10.3 s after the take-up; 12.5–14.3 s before the midrange,
+/// when the mean over one swing period weighed it). The paid-out
 /// hypothesis follows the true swing (in motion it reads the load within
 /// 0.3 %), but the stop leaves its weighing up to 16 % low for 1–2 s: the
 /// force filter lets the cylinder's friction go as the stop passes through
 /// it, while the limiter takes it off in full until the filtered rate falls
-/// under 0.05 °/s, up to a second later, and then over `seal_release_s`.
+/// under 0.05 °/s, up to a second later, and then over `seal_release_up_s`.
 /// Its inconsistency (`moment_limiter::load_jump`) takes that dip in and is
 /// still 0.037–0.040 at the take-up, over the 0.03 a rope needs to vote, so
 /// no rope rescales the load.
@@ -2770,39 +2782,40 @@ fn a_load_added_at_rest_on_the_paid_out_rope_f32() {
 /// seeds 1–9, 2 early cuts (seed 5 #2572 at true u 0.882, seed 6 #4006 at
 /// 0.873) and a false OVERLOAD (seed 7 #4988, true u ≤ 0.818), all at rest
 /// after raises to 83–84.5° whose seals released over 0.72–0.99 s. Setting
-/// the limiter's `seal_release_s` to 0.01 s gives the same cuts here, so
-/// the gap is the seals' release: the limiter assumes seals that hold
-/// their friction until the filtered rate shows the stop and release it
-/// over 0.5 s, and these logs' seals let it go at the stop. What would
-/// close it: the calibration learning the seals' release time from its
-/// runs' stops, and the share following the filter's response to that
-/// release.
+/// the limiter's release time to 0.01 s gave the same cuts here, so the
+/// gap was the seals' release: the limiter assumed seals that hold their
+/// friction until the filtered rate shows the stop and release it over
+/// 0.5 s, and these logs' seals let it go at the stop. The calibration now
+/// learns it, each crane its own (the campaign's seals that release over
+/// 0.7–1 s read 0.2–0.4 s). Not yet: 20° → 70° with the seals' friction and
+/// 20° → 50°.
 #[test]
-#[ignore = "KNOWN GAP: a load added 3 s after a raise to 70-80 deg on the paid-out rope is cut only when a crest and a trough of its swing have turned (6.0-10.3 s after; 1.01 s after 20-50 deg)"]
+#[ignore = "KNOWN GAP: a load added 3 s after a raise 20-70 deg on the paid-out rope with seal friction is cut only when a crest and a trough of its swing have turned (6.07 s after; 1.01 s after 20-50 deg)"]
 fn a_load_added_at_rest_on_the_paid_out_rope_soon_after_a_raise_known_gap() {
     load_added_at_rest_on_the_paid_out_rope(Precision::F64, &PAID_OUT_SOON_GAP, 3.0);
 }
 
 /// The known gap above pinned at its measured size, so that it cannot widen
-/// unseen: 110 % added 3 s after those raises is an OVERLOAD within 10.5 s
-/// of its take-up (measured, f64 and f32: at most 10.28 s, once a crest and
+/// unseen: 110 % added 3 s after those raises is an OVERLOAD within 6.5 s
+/// of its take-up (measured, f64 and f32: at most 6.07 s, once a crest and
 /// a trough of the new load's swing have turned,
-/// `moment_limiter::swing_midrange`; 14.26 s before, when the mean over one
-/// swing period weighed it), 90 % never.
-fn a_load_added_at_rest_on_the_paid_out_rope_soon_after_a_raise_is_cut_within_10_5_s(precision: Precision) {
+/// `moment_limiter::swing_midrange`; 10.28 s before the calibration learned
+/// the seals' release after a raise, 14.26 s before the midrange, when the
+/// mean over one swing period weighed it), 90 % never.
+fn a_load_added_at_rest_on_the_paid_out_rope_soon_after_a_raise_is_cut_within_6_5_s(precision: Precision) {
     let (_, (slowest_cut, cut_at_90)) = load_added_at_rest_on_the_paid_out_rope_measured(precision, &PAID_OUT_SOON_GAP, 3.0);
     println!("{precision:?}: 110 % cut at most {slowest_cut:.2} s after its take-up; 90 % an OVERLOAD: {cut_at_90}");
-    assert!(slowest_cut <= 10.5 && !cut_at_90, "110 % cut {slowest_cut:.2} s after its take-up; 90 % an OVERLOAD: {cut_at_90}");
+    assert!(slowest_cut <= 6.5 && !cut_at_90, "110 % cut {slowest_cut:.2} s after its take-up; 90 % an OVERLOAD: {cut_at_90}");
 }
 
 #[test]
-fn a_load_added_at_rest_on_the_paid_out_rope_soon_after_a_raise_is_cut_within_10_5_s_f64() {
-    a_load_added_at_rest_on_the_paid_out_rope_soon_after_a_raise_is_cut_within_10_5_s(Precision::F64);
+fn a_load_added_at_rest_on_the_paid_out_rope_soon_after_a_raise_is_cut_within_6_5_s_f64() {
+    a_load_added_at_rest_on_the_paid_out_rope_soon_after_a_raise_is_cut_within_6_5_s(Precision::F64);
 }
 
 #[test]
-fn a_load_added_at_rest_on_the_paid_out_rope_soon_after_a_raise_is_cut_within_10_5_s_f32() {
-    a_load_added_at_rest_on_the_paid_out_rope_soon_after_a_raise_is_cut_within_10_5_s(Precision::F32);
+fn a_load_added_at_rest_on_the_paid_out_rope_soon_after_a_raise_is_cut_within_6_5_s_f32() {
+    a_load_added_at_rest_on_the_paid_out_rope_soon_after_a_raise_is_cut_within_6_5_s(Precision::F32);
 }
 
 /// The cases of [`ADDED_GAP`] but the 3 m rope stopped at 80°: there the
@@ -3931,49 +3944,55 @@ fn switched_on_during_a_lowering() {
 
 /// KNOWN GAP, measured (f64): a load added at rest where a rope of the bank
 /// follows the swing ([`ADDED_SEEN`], 110 % and 90 % taken up in 0.5 s 3 s
-/// after the stop) in two worlds the campaign does not draw.
+/// after the stop) with seals that stay stuck at standstill (the friction
+/// relaxes over 60 s; the campaign's cranes 0–1 s): the rest reading moves
+/// from the move's by the stuck friction's share after a lowering (the
+/// limiter releases it over its configured 0.5 s there; after a raise the
+/// calibration learned 60 s, `moment_limiter::seal_release`), every rope's
+/// ratio to its average with it, and the rope that follows the swing is
+/// not consistent enough to vote. 4 of 16 cases of 110 % are cut late,
+/// all after 60° → 40°: on the 5.95 m rope at +1.04–1.07 s and on the 8.9 m
+/// rope at +2.34–2.37 s (the others at +0.69–0.87 s, as with released
+/// seals). Before the calibration learned the release after a raise, also
+/// 40° → 60° on the 5.95 m rope at +3.61–3.69 s; released over 3 s, one
+/// case at +3.86 s.
 ///
-/// - Seals that stay stuck at standstill (the friction relaxes over 60 s;
-///   the campaign's cranes 0–1 s, the limiter takes it off over 0.5 s): the
-///   rest reading moves from the move's by the stuck friction's share, every
-///   rope's ratio to its average with it, and the rope that follows the
-///   swing is not consistent enough to vote. 6 of 16 cases of 110 % are cut
-///   late: 40° → 60° on the 5.95 m rope at +3.61–3.69 s, 60° → 40° on the
-///   5.95 m rope at +1.05–1.07 s and on the 8.9 m rope at +2.34–2.37 s
-///   (the others at +0.69–0.87 s, as with released seals). Released over
-///   3 s: one case, +3.86 s; over 1 s or less: none.
-/// - 0.09° of angle noise (three times synth's): the same 40° → 60° case
-///   with constant friction at +3.90 s; the other 15 at +0.69–0.90 s.
-///
-/// The limiter errs high after a raise with stuck seals (the friction
-/// read as load), so the lateness is of a load added after the stop's
-/// transient, not a missed overload at rest. What would close it: a
-/// consistency test that a change common to every rope (the seals'
-/// release, the noise) does not disturb, which the previous attempt
+/// What would close it: a consistency test that a change common to every
+/// rope (the seals' release) does not disturb, which the previous attempt
 /// (freezing the ropes' inconsistency through the stop) did not give
-/// without false OVERLOADs.
+/// without false OVERLOADs; or the release after a lowering learned too,
+/// which read the load low where the seals let go at once
+/// (`moment_limiter::seal_release`).
 #[test]
-#[ignore = "KNOWN GAP: with seals stuck at standstill or 0.09 deg of angle noise, a load added 3 s after a stop is cut up to 3.9 s after its take-up where a rope follows the swing"]
-fn a_load_added_at_rest_with_stuck_seals_or_angle_noise_known_gap() {
-    let mut failed = Vec::new();
-    let run = || std::panic::catch_unwind(|| load_added_at_rest_after_a_move(Precision::F64, &ADDED_SEEN)).is_ok();
-    with_setting(&STANDSTILL_RELEASE_S, 60.0, || if !run() { failed.push("stuck seals") });
-    with_setting(&NOISE_DEG, Some(0.09), || if !run() { failed.push("0.09 deg of angle noise") });
-    assert!(failed.is_empty(), "load added at rest late with {failed:?}");
+#[ignore = "KNOWN GAP: with seals stuck at standstill, a load added 3 s after a lowering's stop is cut up to 2.4 s after its take-up where a rope follows the swing"]
+fn a_load_added_at_rest_with_stuck_seals_known_gap() {
+    with_setting(&STANDSTILL_RELEASE_S, 60.0, || load_added_at_rest_after_a_move(Precision::F64, &ADDED_SEEN));
 }
 
 /// The known gap above pinned at its measured size, so that it cannot widen
-/// unseen: with seals stuck at standstill or 0.09° of angle noise, 110 %
-/// added at rest is cut within 4.0 s of its take-up (measured: at most
-/// 3.90 s) and 90 % is never an OVERLOAD.
+/// unseen: with seals stuck at standstill 110 % added at rest is cut within
+/// 2.5 s of its take-up (measured: at most 2.37 s; 3.69 s before the
+/// calibration learned the release after a raise) and 90 % is never an
+/// OVERLOAD.
 #[test]
-fn a_load_added_at_rest_with_stuck_seals_or_angle_noise_is_cut_within_4_s() {
-    let mut worst = Vec::new();
-    let mut run = |name: &'static str| worst.push((name, load_added_at_rest_after_a_move_measured(Precision::F64, &ADDED_SEEN, 4.0).1));
-    with_setting(&STANDSTILL_RELEASE_S, 60.0, || run("stuck seals"));
-    with_setting(&NOISE_DEG, Some(0.09), || run("0.09 deg of angle noise"));
-    println!("{worst:?}");
-    assert!(worst.iter().all(|(_, w)| w.slowest_overload_s <= 4.0 && w.overload_at_90_u == 0.0), "{worst:#?}");
+fn a_load_added_at_rest_with_stuck_seals_is_cut_within_2_5_s() {
+    let worst = with_setting(&STANDSTILL_RELEASE_S, 60.0, || load_added_at_rest_after_a_move_measured(Precision::F64, &ADDED_SEEN, 4.0).1);
+    println!("stuck seals: {worst:?}");
+    assert!(worst.slowest_overload_s <= 2.5 && worst.overload_at_90_u == 0.0, "{worst:#?}");
+}
+
+/// A load added at rest where a rope of the bank follows the swing, behind
+/// 0.09° of angle noise (three times synth's): 110 % cut within 1 s of its
+/// take-up, 90 % never, as without the noise (measured: the estimate at
+/// 1/1.1 of the new load within 0.83 s).
+/// Cut up to 3.90 s after (40° → 60° on the 5.95 m rope, constant
+/// friction) before the calibration learned the seals' release after a
+/// raise (`moment_limiter::seal_release`): the limiter took off for 1–2 s
+/// friction the simulator's seals had let go at the stop, and the noisy
+/// rest kept the rope that follows the swing from voting.
+#[test]
+fn a_load_added_at_rest_behind_0_09_deg_of_angle_noise() {
+    with_setting(&NOISE_DEG, Some(0.09), || load_added_at_rest_after_a_move(Precision::F64, &ADDED_SEEN));
 }
 
 /// The loads added at rest 3 s after a stop, where a rope of the bank

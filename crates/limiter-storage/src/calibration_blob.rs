@@ -4,17 +4,20 @@
 //! on the board (the JSON reader made the board image 71.5 KB, over its
 //! 64 KiB flash budget; this decoder is a few hundred bytes).
 //!
-//! ## Format, version [`BLOB_FORMAT`] = 4 (100 bytes, little-endian)
+//! ## Format, version [`BLOB_FORMAT`] = 5 (108 bytes, little-endian)
 //!
 //! | bytes | holds |
 //! |---|---|
 //! | 0–3 | magic `LMLC` |
 //! | 4–5 | blob format version, [`BLOB_FORMAT`] |
 //! | 6–7 | calibration schema version, [`CALIBRATION_VERSION`] |
-//! | 8–95 | the eleven values of [`CALIBRATION_KEYS`], in its order, each an `f64` (the last two, the friction per unit boom rate up and down) |
-//! | 96–99 | CRC-32 ([`crate::crc`]) of bytes 0–95 |
+//! | 8–103 | the twelve values of [`CALIBRATION_KEYS`], in its order, each an `f64` (the last, the seals' release time) |
+//! | 104–107 | CRC-32 ([`crate::crc`]) of bytes 0–103 |
 //!
-//! **Format 3** (84 bytes: schema version 3, the first nine values, CRC at
+//! **Format 4** (100 bytes: schema version 4, the first eleven values, CRC
+//! at 96–99), what boards calibrated before the seals' release was learned
+//! hold, is still decoded, without a release time (the board takes friction
+//! off with its configured one, as it did); **format 3** (84 bytes: schema version 3, the first nine values, CRC at
 //! 80–83), what boards calibrated before the friction per unit rate was
 //! learned hold, is still decoded, as c = 0 (the friction it was applied
 //! with); **format 2** (76 bytes: schema version 2, the first eight values, CRC
@@ -23,7 +26,7 @@
 //! lag, as it did); **format 1** (60 bytes: schema version 1, the first
 //! six values, CRC at 56–59), from before the seal law, too, as the
 //! constant friction it was (b = 0): a board keeps its calibration across
-//! a firmware update. The encoder writes format 4 only.
+//! a firmware update. The encoder writes format 5 only.
 //!
 //! Values are stored as the `f64` the JSON reader read, so a blob decodes to
 //! exactly the calibration the JSON file gives, in `f64` on the host and, by
@@ -41,15 +44,16 @@ use crane_model::Real;
 use moment_limiter::tools::config_file::{
     calibration_from_values, calibration_values, check_calibration, CalibrationFileError,
     CALIBRATION_KEYS, CALIBRATION_VERSION, CALIBRATION_VERSION_1, CALIBRATION_VERSION_2,
-    CALIBRATION_VERSION_3, V1_KEYS, V2_KEYS, V3_KEYS,
+    CALIBRATION_VERSION_3, CALIBRATION_VERSION_4, V1_KEYS, V2_KEYS, V3_KEYS, V4_KEYS,
 };
 use moment_limiter::load_estimate::Calibration;
 
 /// Magic at the start of a calibration blob.
 pub const BLOB_MAGIC: [u8; 4] = *b"LMLC";
 /// The blob format the encoder writes (the decoder also reads
-/// [`BLOB_FORMAT_1`], [`BLOB_FORMAT_2`] and [`BLOB_FORMAT_3`]).
-pub const BLOB_FORMAT: u16 = 4;
+/// [`BLOB_FORMAT_1`], [`BLOB_FORMAT_2`], [`BLOB_FORMAT_3`] and
+/// [`BLOB_FORMAT_4`]).
+pub const BLOB_FORMAT: u16 = 5;
 /// The first blob format: schema version 1, six values.
 pub const BLOB_FORMAT_1: u16 = 1;
 /// The second blob format: schema version 2, eight values (no lag).
@@ -57,7 +61,10 @@ pub const BLOB_FORMAT_2: u16 = 2;
 /// The third blob format: schema version 3, nine values (no friction per
 /// unit rate).
 pub const BLOB_FORMAT_3: u16 = 3;
-/// Bytes of a calibration blob (format 4).
+/// The fourth blob format: schema version 4, eleven values (no seals'
+/// release time).
+pub const BLOB_FORMAT_4: u16 = 4;
+/// Bytes of a calibration blob (format 5).
 pub const BLOB_LEN: usize = 8 + 8 * CALIBRATION_KEYS.len() + 4;
 /// Bytes of a format-1 blob.
 pub const BLOB_LEN_1: usize = 8 + 8 * V1_KEYS + 4;
@@ -65,6 +72,8 @@ pub const BLOB_LEN_1: usize = 8 + 8 * V1_KEYS + 4;
 pub const BLOB_LEN_2: usize = 8 + 8 * V2_KEYS + 4;
 /// Bytes of a format-3 blob.
 pub const BLOB_LEN_3: usize = 8 + 8 * V3_KEYS + 4;
+/// Bytes of a format-4 blob.
+pub const BLOB_LEN_4: usize = 8 + 8 * V4_KEYS + 4;
 const VALUES_AT: usize = 8;
 const CRC_AT: usize = BLOB_LEN - 4;
 
@@ -76,8 +85,8 @@ pub enum CalibrationBlobError {
     /// The store could not be read (flash error, corrupt journal, or the
     /// store's own CRC-32 of the blob failed).
     Unreadable,
-    /// Not [`BLOB_LEN`] (format 4), [`BLOB_LEN_3`], [`BLOB_LEN_2`] nor
-    /// [`BLOB_LEN_1`] bytes.
+    /// Not [`BLOB_LEN`] (format 5), [`BLOB_LEN_4`], [`BLOB_LEN_3`],
+    /// [`BLOB_LEN_2`] nor [`BLOB_LEN_1`] bytes.
     Length(usize),
     /// The magic is not [`BLOB_MAGIC`].
     Magic,
@@ -178,7 +187,7 @@ pub fn encode_calibration(cal: &Calibration<f64>) -> Result<[u8; BLOB_LEN], Cali
     let mut b = [0u8; BLOB_LEN];
     crate::put(&mut b, 0, &BLOB_MAGIC);
     crate::put(&mut b, 4, &BLOB_FORMAT.to_le_bytes());
-    // The schema version is 4: it fits 16 bits with room to spare.
+    // The schema version is 5: it fits 16 bits with room to spare.
     crate::put(&mut b, 6, &(CALIBRATION_VERSION as u16).to_le_bytes());
     for (i, v) in calibration_values(cal).iter().enumerate() {
         crate::put(&mut b, VALUES_AT + 8 * i, &v.to_le_bytes());
@@ -196,13 +205,14 @@ fn u16_at(b: &[u8], at: usize) -> u16 {
     u16::from_le_bytes(w)
 }
 
-/// Decodes and checks a blob of format 4, 3, 2 or 1 (see the module doc for the
+/// Decodes and checks a blob of format 5, 4, 3, 2 or 1 (see the module doc for the
 /// order of the checks), and converts the values to `T` as the JSON reader
 /// does.
 pub fn decode_calibration<T: Real>(bytes: &[u8]) -> Result<Calibration<T>, CalibrationBlobError> {
     // The length says the format; the format field must agree with it.
     let (keys, expected_format, schema_version) = match bytes.len() {
         BLOB_LEN => (CALIBRATION_KEYS.len(), BLOB_FORMAT, CALIBRATION_VERSION),
+        BLOB_LEN_4 => (V4_KEYS, BLOB_FORMAT_4, CALIBRATION_VERSION_4),
         BLOB_LEN_3 => (V3_KEYS, BLOB_FORMAT_3, CALIBRATION_VERSION_3),
         BLOB_LEN_2 => (V2_KEYS, BLOB_FORMAT_2, CALIBRATION_VERSION_2),
         BLOB_LEN_1 => (V1_KEYS, BLOB_FORMAT_1, CALIBRATION_VERSION_1),
@@ -229,7 +239,8 @@ pub fn decode_calibration<T: Real>(bytes: &[u8]) -> Result<Calibration<T>, Calib
     }
     // Format 1 holds no seal-law share (b = 0, the constant friction it
     // was), formats 1 and 2 no lag (the configured one), formats 1–3 no
-    // friction per unit rate (c = 0).
+    // friction per unit rate (c = 0), formats 1–4 no seals' release time
+    // (the configured one).
     let v: [f64; CALIBRATION_KEYS.len()] = core::array::from_fn(|i| {
         let mut w = [0u8; 8];
         if i < keys {
@@ -279,7 +290,7 @@ pub fn load_calibration<T: Real, F: crate::journal::Flash>(
         Err(crate::store::StoreError::BadBlob) => Err(CalibrationBlobError::Crc),
         Err(_) => Err(CalibrationBlobError::Unreadable),
         Ok(Some(blob))
-            if ![BLOB_FORMAT, BLOB_FORMAT_3, BLOB_FORMAT_2, BLOB_FORMAT_1].contains(&blob.version) =>
+            if ![BLOB_FORMAT, BLOB_FORMAT_4, BLOB_FORMAT_3, BLOB_FORMAT_2, BLOB_FORMAT_1].contains(&blob.version) =>
         {
             Err(CalibrationBlobError::Format(blob.version))
         }

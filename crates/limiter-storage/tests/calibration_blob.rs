@@ -8,17 +8,18 @@ mod common;
 use common::{layout, CutFlash};
 use limiter_storage::calibration_blob::{
     decode_calibration, encode_calibration, load_calibration, CalibrationBlobError, BLOB_FORMAT,
-    BLOB_FORMAT_1, BLOB_FORMAT_2, BLOB_FORMAT_3, BLOB_LEN, BLOB_LEN_1, BLOB_LEN_2, BLOB_LEN_3,
-    BLOB_MAGIC,
+    BLOB_FORMAT_1, BLOB_FORMAT_2, BLOB_FORMAT_3, BLOB_FORMAT_4, BLOB_LEN, BLOB_LEN_1, BLOB_LEN_2,
+    BLOB_LEN_3, BLOB_LEN_4, BLOB_MAGIC,
 };
 use limiter_storage::crc::crc32;
 use limiter_storage::store::{Key, Store};
 use moment_limiter::tools::config_file::{
     calibration_from_values, calibration_values, hostile, parse_calibration,
     CalibrationFileError, CALIBRATION_KEYS, CALIBRATION_VERSION, CALIBRATION_VERSION_1,
-    CALIBRATION_VERSION_2, CALIBRATION_VERSION_3, KEY_COUNT, V1_KEYS, V2_KEYS, V3_KEYS,
+    CALIBRATION_VERSION_2, CALIBRATION_VERSION_3, CALIBRATION_VERSION_4, KEY_COUNT, V1_KEYS,
+    V2_KEYS, V3_KEYS, V4_KEYS,
 };
-use moment_limiter::cycle::DEFAULT_ANGLE_SENSOR_LAG_S;
+use moment_limiter::cycle::{DEFAULT_ANGLE_SENSOR_LAG_S, DEFAULT_SEAL_RELEASE_S};
 use moment_limiter::load_estimate::Calibration;
 
 /// A blob with any values and versions and a correct CRC: what a buggy or
@@ -53,11 +54,13 @@ fn json_to_blob_to_the_same_calibration_in_f64_and_f32() {
         let cal = parse_calibration::<f64>(text.as_bytes()).unwrap();
         let blob = encode_calibration(&cal).unwrap();
         assert_eq!(blob.len(), BLOB_LEN);
-        assert_eq!(BLOB_LEN, 100);
-        // A file without a lag (the example is of schema 1) is stored with
-        // the standard configuration's lag, what the limiter used for it.
+        assert_eq!(BLOB_LEN, 108);
+        // A file without a lag or a release time (the example is of schema
+        // 1) is stored with the standard configuration's, what the limiter
+        // used for them.
         let with_lag = |c: Calibration<f64>| Calibration {
             angle_sensor_lag_s: c.angle_sensor_lag_s.or(Some(DEFAULT_ANGLE_SENSOR_LAG_S)),
+            seal_release_up_s: c.seal_release_up_s.or(Some(DEFAULT_SEAL_RELEASE_S)),
             ..c
         };
         assert_eq!(decode_calibration::<f64>(&blob).unwrap(), with_lag(cal));
@@ -67,6 +70,7 @@ fn json_to_blob_to_the_same_calibration_in_f64_and_f32() {
             decode_calibration::<f32>(&blob).unwrap(),
             Calibration {
                 angle_sensor_lag_s: c32.angle_sensor_lag_s.or(Some(DEFAULT_ANGLE_SENSOR_LAG_S as f32)),
+                seal_release_up_s: c32.seal_release_up_s.or(Some(DEFAULT_SEAL_RELEASE_S as f32)),
                 ..c32
             }
         );
@@ -74,6 +78,37 @@ fn json_to_blob_to_the_same_calibration_in_f64_and_f32() {
         let raw = raw_blob(&values(&cal), BLOB_FORMAT, CALIBRATION_VERSION as u16);
         assert_eq!(raw, blob.to_vec());
     }
+}
+
+#[test]
+fn a_format_4_blob_still_decodes_without_a_release_time() {
+    // What a board calibrated before the seals' release was learned holds:
+    // 100 bytes, schema 4.
+    let v4 = parse_calibration::<f64>(hostile::GOOD_V4.as_bytes()).unwrap();
+    assert_eq!(v4.seal_release_up_s, None);
+    assert!(v4.friction_up_per_rate > 0.0);
+    let blob = raw_blob(&values(&v4)[..V4_KEYS], BLOB_FORMAT_4, CALIBRATION_VERSION_4 as u16);
+    assert_eq!((blob.len(), BLOB_LEN_4), (100, 100));
+    assert_eq!(decode_calibration::<f64>(&blob).unwrap(), v4);
+    assert_eq!(
+        decode_calibration::<f32>(&blob).unwrap(),
+        parse_calibration::<f32>(hostile::GOOD_V4.as_bytes()).unwrap()
+    );
+    // The length and the versions must agree.
+    assert_eq!(
+        decode_calibration::<f32>(&raw_blob(&values(&v4)[..V4_KEYS], BLOB_FORMAT, 4)),
+        Err(CalibrationBlobError::Format(BLOB_FORMAT))
+    );
+    assert_eq!(
+        decode_calibration::<f32>(&raw_blob(&values(&v4)[..V4_KEYS], BLOB_FORMAT_4, 5)),
+        Err(CalibrationBlobError::SchemaVersion(5))
+    );
+    // Stored by the previous firmware under store version 4: the board loads it.
+    let mut store = Store::new(CutFlash::<4>::new(), layout());
+    store.write_blob(Key::Calibration, BLOB_FORMAT_4, &blob).unwrap();
+    let (back, crc) = load_calibration::<f64, _>(&mut store).unwrap();
+    assert_eq!(back, v4);
+    assert_eq!(crc, crc32(&blob));
 }
 
 #[test]
@@ -291,7 +326,7 @@ fn corrupt_truncated_and_foreign_blobs_are_refused() {
         }
     }
     // Wrong lengths.
-    for n in [0, 4, BLOB_LEN_1 - 1, BLOB_LEN_1 + 1, BLOB_LEN_2 - 1, BLOB_LEN_2 + 1, BLOB_LEN_3 - 1, BLOB_LEN_3 + 1, BLOB_LEN - 1] {
+    for n in [0, 4, BLOB_LEN_1 - 1, BLOB_LEN_1 + 1, BLOB_LEN_2 - 1, BLOB_LEN_2 + 1, BLOB_LEN_3 - 1, BLOB_LEN_3 + 1, BLOB_LEN_4 - 1, BLOB_LEN_4 + 1, BLOB_LEN - 1] {
         assert_eq!(
             decode_calibration::<f32>(&blob[..n]),
             Err(CalibrationBlobError::Length(n))

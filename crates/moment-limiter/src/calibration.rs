@@ -48,10 +48,14 @@
 //! **Offset and friction apart.** At rest the seals release (the simulator's
 //! standstill release, and what a settled cylinder does), so the residual
 //! of a still boom is the force offset alone: the learner averages it over
-//! the samples before the first motion of each log and those long after a
-//! stop (the limiter's [`Measurement::static_friction_share`] below 1 %),
-//! r_rest. With at least as many rest samples as the steady minimum, the
-//! offset is r_rest and each direction's law is fitted against it. Without
+//! the samples before the first motion of each log, r_rest. Where these
+//! are fewer than the steady minimum, also over those long after a stop
+//! (the limiter's [`Measurement::static_friction_share`] below 1 %, 2.3 s
+//! after it sees the stop): taken with them, the offset of the campaign's
+//! cranes (runs resting 5 s after their stops, seed 1) moved by up to
+//! 0.27 kN, and stuck seals' by 0.9 kN (the field tests' runs). With at
+//! least as many rest samples as the steady minimum, the offset is r_rest
+//! and each direction's law is fitted against it. Without
 //! them, up and down cannot be told from the offset, and the learner
 //! reports the symmetric split of the lines' intercepts c_up, c_down:
 //! offset = (c_up + c_down)/2, a_up = a_down = max(0, (c_up − c_down)/2),
@@ -60,6 +64,10 @@
 //! offset on both transducers is a force offset; an angle offset is a
 //! model error the offset and the slope absorb in part) and are not learned
 //! (0); a technician may set them in the calibration file.
+//!
+//! **The seals' release after a raise** is read from the rest after the
+//! up runs' stops, once the law and the offset are known
+//! ([`crate::seal_release`]).
 //!
 //! **The angle sensor's lag** is learned before the friction, by
 //! [`crate::sensor_lag`]: the runs go through the signal chain once per
@@ -95,6 +103,7 @@ use crane_model::{ModelError, Real};
 
 use crate::io::Measurement;
 use crate::load_estimate::{model_force_terms, Calibration, Direction, Friction, MAX_PER_FORCE, MAX_PER_RATE_N_S};
+use crate::seal_release::{fit_release, ReleaseFit, ReleaseSums, RELEASE_WINDOW_S};
 
 /// Least spread of the piston force over a direction's steady samples
 /// (standard deviation over mean) for the slope b to be observable.
@@ -486,6 +495,9 @@ pub struct Learned<T> {
     /// `true`: the offset came from samples at rest; `false`: the
     /// symmetric split (see the module doc).
     pub offset_from_rest: bool,
+    /// The seals' release time read from the rest after the runs' raises
+    /// ([`crate::seal_release`]); `None` without such rest.
+    pub release: Option<ReleaseFit<T>>,
 }
 
 /// Running moments of the residual per direction for one or more runs.
@@ -499,6 +511,10 @@ pub struct CalibrationLearner<T> {
     /// their mean residual is the offset, their line the offset and a load
     /// told apart ([`Self::rest_split`]).
     rest: Moments<T>,
+    /// The same over the samples before each log's first motion: seals that
+    /// hold no friction whatever their release (the offset where there are
+    /// enough of them; see the module doc).
+    rest_before: Moments<T>,
     /// Sum of the model's piston force per kg over the steady samples.
     steady_per_kg: T,
     /// The known hook load of the runs observed now (kg).
@@ -506,6 +522,11 @@ pub struct CalibrationLearner<T> {
     /// A law to check against: the largest |residual| per direction.
     check: Option<Calibration<T>>,
     max_residual: (T, T),
+    /// The samples at rest after raises' stops ([`crate::seal_release`]).
+    release: ReleaseSums<T>,
+    /// The release time the runs' limiter took the friction off with (s):
+    /// its share gives the time since the stop.
+    runs_release_s: T,
 }
 
 impl<T: Real> Default for CalibrationLearner<T> {
@@ -528,9 +549,12 @@ impl<T: Real> CalibrationLearner<T> {
             up: Moments::new(),
             down: Moments::new(),
             rest: Moments::new(),
+            rest_before: Moments::new(),
             steady_per_kg: T::lit(0.0),
             load_kg: T::lit(0.0),
             check: None,
+            release: ReleaseSums::new(),
+            runs_release_s: T::lit(crate::cycle::DEFAULT_SEAL_RELEASE_S),
             max_residual: (T::lit(0.0), T::lit(0.0)),
         }
     }
@@ -576,13 +600,23 @@ impl<T: Real> CalibrationLearner<T> {
             Direction::Still => {
                 self.pending.clear();
                 // Before any motion, or with the seals released: the offset.
-                let released = matches!(m.friction, Friction::Static { last_moving: None })
-                    || m.static_friction_share < T::lit(0.01);
+                let before = matches!(m.friction, Friction::Static { last_moving: None });
+                let released = before || m.static_friction_share < T::lit(0.01);
+                let (f, inertia) = model_force_terms(model, m.boom.angle_rad, m.accel_rad_s2())?;
+                let at_load = f.at(self.load_kg);
+                let r = m.piston_force_n - inertia - at_load;
                 if released {
-                    let (f, inertia) =
-                        model_force_terms(model, m.boom.angle_rad, m.accel_rad_s2())?;
-                    let r = m.piston_force_n - inertia - f.at(self.load_kg);
                     self.rest.add(f.per_kg, r);
+                }
+                if before {
+                    self.rest_before.add(f.per_kg, r);
+                }
+                // After a raise's stop: the seals' release (the share's
+                // time since the stop, t = −τ₀·ln(share)).
+                let share = m.static_friction_share;
+                let since_s = -self.runs_release_s * share.ln();
+                if m.friction == (Friction::Static { last_moving: Some(Direction::Up) }) && share > T::lit(0.0) && since_s <= T::lit(RELEASE_WINDOW_S) {
+                    self.release.add(since_s, (at_load + inertia).abs(), r);
                 }
                 return Ok(());
             }
@@ -642,6 +676,8 @@ impl<T: Real> CalibrationLearner<T> {
         self.up.merge(&other.up);
         self.down.merge(&other.down);
         self.rest.merge(&other.rest);
+        self.rest_before.merge(&other.rest_before);
+        self.release.merge(&other.release);
         self.steady_per_kg += other.steady_per_kg;
         self.max_residual.0 = self.max_residual.0.max(other.max_residual.0);
         self.max_residual.1 = self.max_residual.1.max(other.max_residual.1);
@@ -762,7 +798,11 @@ impl<T: Real> CalibrationLearner<T> {
             }
         }
         let one = T::lit(1.0);
+        // The rest before the first motion where it is long enough: after a
+        // stop the seals may still hold friction (see the module doc).
+        let before = self.rest_before.n >= min_samples.max(1);
         let (offset, from_rest) = match self.mean_rest_residual_n() {
+            _ if before => (self.rest_before.mean_y, true),
             Some(rest) if self.rest.n >= min_samples.max(1) => (rest, true),
             _ => {
                 // Intercepts of the lines r = c + s·b·F with the offset
@@ -798,11 +838,17 @@ impl<T: Real> CalibrationLearner<T> {
         if !finite {
             return Err(CalibrationError::NotFinite);
         }
+        let release = fit_release(&self.release, (up.a_n, up.b), offset);
+        let cal = Calibration {
+            seal_release_up_s: release.filter(|r| r.observable && r.samples >= min_samples).map(|r| r.release_s),
+            ..cal
+        };
         Ok(Learned {
             calibration: cal,
             up,
             down,
             offset_from_rest: from_rest,
+            release,
         })
     }
 }

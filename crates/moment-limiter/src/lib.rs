@@ -29,7 +29,7 @@
 //! | logger | [`event_log`] | EN 13000 event ring buffer |
 //! | the cycle | [`cycle`] | [`cycle::Limiter`]: one `step` ties the above together; its config, report and signal chain |
 //! | tools (not in the cycle; `no_std`, the QEMU firmware uses them too) | [`tools`] | SPEC §5 CSV parser, replay engine and printed output; the calibration file's schema, its one reader (host and firmware) and writer |
-//! | learning | [`calibration`] | friction from unloaded runs |
+//! | learning | [`calibration`], [`sensor_lag`], [`seal_release`] | friction from unloaded runs (and test weights), the angle sensor's lag, the seals' release after a raise |
 //! | testing aids | `testing` (feature `testing`) | sensor fault injection; a rigid stand-in model |
 //!
 //! ## What a firmware author calls
@@ -62,6 +62,7 @@ pub mod load_jump;
 pub mod negative_load;
 pub mod period_mean;
 pub mod piston_force;
+pub mod seal_release;
 pub mod sensor_lag;
 pub mod state_machine;
 pub mod static_load;

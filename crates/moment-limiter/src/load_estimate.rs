@@ -248,6 +248,16 @@ pub const MAX_PER_RATE_N_S: f64 = 400_000.0;
 /// 4°; it is broken or mounted wrong, not something to correct for.
 pub const MAX_ANGLE_SENSOR_LAG_S: f64 = 0.5;
 
+/// Shortest seals' release time a calibration may hold (s): a technician
+/// may set one down to it (the calibration learns none under 0.2 s,
+/// [`crate::seal_release::RELEASE_CANDIDATES_S`]); the limiter divides a
+/// cycle's step by it.
+pub const MIN_SEAL_RELEASE_S: f64 = 0.01;
+
+/// Longest seals' release time a calibration may hold (s): the longest the
+/// calibration learns, seals that stay stuck.
+pub const MAX_SEAL_RELEASE_S: f64 = 60.0;
+
 /// What `crane-sim calibrate` learns (and a technician may adjust).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Calibration<T> {
@@ -280,6 +290,12 @@ pub struct Calibration<T> {
     /// `None` (no calibration, or a file of schema version 1 or 2): the
     /// configured [`crate::cycle::LimiterConfig::angle_sensor_lag_s`].
     pub angle_sensor_lag_s: Option<T>,
+    /// The seals' release time after a raise as calibrated (s;
+    /// [`crate::seal_release`]): the limiter takes a raise's friction off a
+    /// still boom's force with it. `None` (not observable in the runs, or a
+    /// file of schema version 1–4): the configured
+    /// [`crate::cycle::LimiterConfig::seal_release_s`], as after a lowering.
+    pub seal_release_up_s: Option<T>,
 }
 
 impl<T: Real> Calibration<T> {
@@ -298,6 +314,7 @@ impl<T: Real> Calibration<T> {
             p2_offset_bar: z,
             angle_offset_deg: z,
             angle_sensor_lag_s: None,
+            seal_release_up_s: None,
         }
     }
 
@@ -324,6 +341,9 @@ impl<T: Real> Calibration<T> {
             && self
                 .angle_sensor_lag_s
                 .is_none_or(|l| l.is_finite() && l >= T::lit(0.0) && l <= T::lit(MAX_ANGLE_SENSOR_LAG_S))
+            && self
+                .seal_release_up_s
+                .is_none_or(|r| r.is_finite() && r >= T::lit(MIN_SEAL_RELEASE_S) && r <= T::lit(MAX_SEAL_RELEASE_S))
     }
 
     /// The friction law (a, b, c) of a direction of motion (N, –, N·s/rad),

@@ -692,7 +692,7 @@
 //!   1.4 t raised 7° → 54° in 17 s, begun 2 s after power-up, read 1.55 ×
 //!   itself for a sample (estimated u 0.645 at a true 0.416; `crane-sim
 //!   campaign --seed 1 --only 6956`, with the seals' release learned by
-//!   the calibration, 0.1 s: the breakaway was held 0.4 s into the raise;
+//!   the calibration, 0.1 s then, 0.2 s now: the breakaway was held 0.4 s into the raise;
 //!   with the default 0.5 s the seals had not released by then, and it was
 //!   not). Now as before, u 0.450.
 //!

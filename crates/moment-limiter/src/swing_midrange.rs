@@ -84,7 +84,8 @@ pub const TURN: f64 = 0.15;
 /// turning points), a dip 0.2 s after the following began counted as a
 /// trough, and 90 % of rated added on the paid-out rope at 80° read 1.10 ×
 /// itself (`host-sim` test
-/// `a_load_added_at_rest_on_the_paid_out_rope_soon_after_a_raise_is_cut_within_10_5_s_f32`).
+/// `a_load_added_at_rest_on_the_paid_out_rope_soon_after_a_raise_is_cut_within_6_5_s_f32`,
+/// then `…_within_10_5_s_f32`).
 pub const MIN_TURN: f64 = 0.05;
 
 /// A first turning point within [`HALF_SWING_S`] of the start of the

@@ -36,6 +36,7 @@ use moment_limiter::calibration::{CalibrationLearner, Learned, SteadyMotion};
 use moment_limiter::cycle::{Limiter, LimiterConfig};
 use moment_limiter::fault::Fault;
 use moment_limiter::io::{Frame, Measurement};
+use moment_limiter::seal_release::{ReleaseFit, RELEASE_CANDIDATES_S};
 use moment_limiter::sensor_lag::{choose_sensor, fit_lag, SensorCandidate, SensorShape, SENSOR_SHAPES};
 use moment_limiter::tools::log_format::LogParser;
 use rayon::prelude::*;
@@ -467,6 +468,7 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
         let (u, d) = check.max_residual_n();
         max = (max.0.max(u), max.1.max(d));
     }
+    let config = LimiterConfig { calibration: cal, ..LimiterConfig::<f64>::standard() };
     let mut json = String::new();
     config_file::write_calibration_json(&mut json, &cal)?;
     std::fs::write(&args.out, json)
@@ -474,7 +476,7 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
     let mut out = crate::stdout::stdout();
     writeln!(
         out,
-        "friction_up_n={:.1} friction_up_per_force={:.5} friction_down_n={:.1} friction_down_per_force={:.5} friction_up_per_rate={:.0} friction_down_per_rate={:.0} force_offset_n={:.1} angle_sensor_lag_s={:.3} samples_up={samples_up} samples_down={samples_down} -> {}",
+        "friction_up_n={:.1} friction_up_per_force={:.5} friction_down_n={:.1} friction_down_per_force={:.5} friction_up_per_rate={:.0} friction_down_per_rate={:.0} force_offset_n={:.1} angle_sensor_lag_s={:.3} seal_release_up_s={:.2} samples_up={samples_up} samples_down={samples_down} -> {}",
         cal.friction_up_n,
         cal.friction_up_per_force,
         cal.friction_down_n,
@@ -483,6 +485,7 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
         cal.friction_down_per_rate,
         cal.force_offset_n,
         lag.lag_s,
+        config.effective_seal_release_s(moment_limiter::load_estimate::Friction::Static { last_moving: Some(moment_limiter::load_estimate::Direction::Up) }),
         args.out.display()
     )?;
     let runs_text = if known.is_empty() {
@@ -555,15 +558,38 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
             lag.lag_s
         )?;
     }
+    let default_release_s = moment_limiter::cycle::DEFAULT_SEAL_RELEASE_S;
+    let release_rms = |r: &ReleaseFit<f64>, s: f64| RELEASE_CANDIDATES_S.iter().zip(r.rms_n).find(|(c, _)| **c == s).map_or(f64::NAN, |(_, e)| e);
+    match (learned.release, cal.seal_release_up_s) {
+        (Some(r), Some(s)) => writeln!(
+            out,
+            "  seals' release after a raise {s:.2} s learned (counted from when the limiter sees the stop; {} samples at rest after the up runs' stops, residual rms {:.1} N, {:.1} N at the default {default_release_s:.2} s; after a lowering the default is kept, see docs/calibration.md)",
+            r.samples,
+            release_rms(&r, s),
+            release_rms(&r, default_release_s)
+        )?,
+        (Some(r), None) => writeln!(
+            out,
+            "  seals' release NOT observable ({} samples at rest after the up runs' stops, {min} needed, and residual rms {:.1} N at best against {:.1} N at worst, at most half needed): the default {default_release_s:.2} s kept; let each up run rest 5 s after its stop",
+            r.samples,
+            r.rms_n.iter().copied().fold(f64::INFINITY, f64::min),
+            r.rms_n.iter().copied().fold(0.0, f64::max)
+        )?,
+        (None, _) => writeln!(
+            out,
+            "  seals' release NOT observable (no rest after the up runs' stops): the default {default_release_s:.2} s kept; let each up run rest 5 s after its stop"
+        )?,
+    }
     writeln!(
         out,
-        "learned: friction law per direction, force offset ({}), angle sensor lag ({}); not observable, left 0: p1/p2 zero offsets (a common offset is the force offset), pendulum offset",
+        "learned: friction law per direction, force offset ({}), angle sensor lag ({}), seals' release ({}); not observable, left 0: p1/p2 zero offsets (a common offset is the force offset), pendulum offset",
         if learned.offset_from_rest {
             "from the boom at rest"
         } else {
             "no rest samples: symmetric split of up and down"
         },
-        if lag.observable { "from the residual's shape in motion" } else { "default kept" }
+        if lag.observable { "from the residual's shape in motion" } else { "default kept" },
+        if cal.seal_release_up_s.is_some() { "from the rest after the raises" } else { "default kept" }
     )?;
     out.flush()?;
     Ok(0)

@@ -953,6 +953,11 @@ struct CraneLaw {
     learned_lag_s: f64,
     /// `false`: the runs did not show the lag and the default was kept.
     lag_observable: bool,
+    /// The seals' synthesized release time (s; 0: at the stop).
+    synth_release_s: f64,
+    /// The release time the calibration learned (s, counted from when the
+    /// limiter sees the stop; NaN: not observable, the default kept).
+    learned_release_s: f64,
 }
 
 impl CraneLaw {
@@ -988,6 +993,8 @@ impl CraneLaw {
             },
             learned_lag_s: cal.angle_sensor_lag_s.map_or(f64::NAN, f64::from),
             lag_observable: *lag_observable,
+            synth_release_s: c.standstill_release_s,
+            learned_release_s: cal.seal_release_up_s.map_or(f64::NAN, f64::from),
         }
     }
 }
@@ -1040,12 +1047,18 @@ fn parse_shard(s: Option<&str>) -> Result<(usize, usize)> {
 /// second formulation of the crane this way ([`summary_in_world`]).
 pub type World<'a> = &'a (dyn Fn(&mut [Sample<f64>], RopeChoice) + Sync);
 
-/// The unloaded up and down calibration runs of `crane` (10 s cycloidal 40°↔80°).
+/// Rest after each calibration run's stop (s): the seals' release shows
+/// there (`moment_limiter::seal_release`; the limiter sees a stop about a
+/// second after it, and the release is read over the seconds after).
+const CALIBRATION_REST_AFTER_S: f64 = 5.0;
+
+/// The unloaded up and down calibration runs of `crane` (10 s cycloidal
+/// 40°↔80°, [`CALIBRATION_REST_AFTER_S`] at rest after).
 fn calibrate_crane(model: &ThesisModel<f64>, crane: &Crane, options: &SimulationOptions, dt: f64, world: Option<World>) -> Result<(CraneCalibration, bool)> {
     let mut logs = Vec::new();
     for (i, dir) in [Direction::Up, Direction::Down].into_iter().enumerate() {
         let mut m = Maneuver::thesis(0.0, 10.0, RampShape::Cycloidal, dir).map_err(|e| anyhow::anyhow!("{e}"))?;
-        m.settle_s = 1.0;
+        m.settle_s = CALIBRATION_REST_AFTER_S;
         let mut samples = synth_core::simulate(model, &m, options).map_err(|e| anyhow::anyhow!("calibration run: {e}"))?;
         if let Some(w) = world {
             w(&mut samples, m.rope);
@@ -1266,13 +1279,14 @@ pub fn run(args: CampaignArgs) -> Result<u8> {
             let _ = writeln!(out, "\nrope {}, friction {}: {} scenarios", g.rope, g.friction, g.grades.scenarios);
             let _ = write_tally(&mut out, &g.grades);
         }
-        let _ = writeln!(out, "\ncalibration: friction law a + b·|F| per direction and angle sensor lag, synthesized -> learned (a in N, lag in s)");
+        let _ = writeln!(out, "\ncalibration: friction law a + b·|F| per direction, angle sensor lag and seals' release, synthesized -> learned (a in N, lag and release in s)");
         for l in &summary.calibrations {
             let _ = writeln!(
                 out,
-                "crane {:>3} {:<8} up {:>7.0} {:.4} -> {:>7.0} {:.4}   down {:>7.0} {:.4} -> {:>7.0} {:.4}   error at 300 kN up {:>+6.0} down {:>+6.0} N   lag {:.3} -> {:.3}{}",
+                "crane {:>3} {:<8} up {:>7.0} {:.4} -> {:>7.0} {:.4}   down {:>7.0} {:.4} -> {:>7.0} {:.4}   error at 300 kN up {:>+6.0} down {:>+6.0} N   lag {:.3} -> {:.3}{}   release {:.2} -> {}",
                 l.crane, l.friction, l.synth_up_a_n, l.synth_up_b, l.learned_up_a_n, l.learned_up_b, l.synth_down_a_n, l.synth_down_b, l.learned_down_a_n, l.learned_down_b, l.up_error_at_300kn_n, l.down_error_at_300kn_n,
-                l.synth_lag_s, l.learned_lag_s, if l.lag_observable { "" } else { " (not observable: default)" }
+                l.synth_lag_s, l.learned_lag_s, if l.lag_observable { "" } else { " (not observable: default)" },
+                l.synth_release_s, if l.learned_release_s.is_nan() { "not observable: default".to_string() } else { format!("{:.2}", l.learned_release_s) }
             );
         }
     }

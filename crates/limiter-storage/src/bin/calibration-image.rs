@@ -166,16 +166,17 @@ mod tests {
             events: 0..0,
         };
         let mut store = Store::new(RamFlash(image), layout);
-        // The example is of schema 1 (no lag): stored with the standard
-        // configuration's lag, what the limiter used for it.
+        // The example is of schema 1 (no lag, no release time): stored with
+        // the standard configuration's, what the limiter used for them.
         let lag = moment_limiter::cycle::DEFAULT_ANGLE_SENSOR_LAG_S;
-        assert_eq!(cal.angle_sensor_lag_s, None);
-        let stored = moment_limiter::load_estimate::Calibration { angle_sensor_lag_s: Some(lag), ..cal };
+        let release = moment_limiter::cycle::DEFAULT_SEAL_RELEASE_S;
+        assert_eq!((cal.angle_sensor_lag_s, cal.seal_release_up_s), (None, None));
+        let stored = moment_limiter::load_estimate::Calibration { angle_sensor_lag_s: Some(lag), seal_release_up_s: Some(release), ..cal };
         assert_eq!(load_calibration::<f64, _>(&mut store).unwrap().0, stored);
         let cal32 = parse_calibration::<f32>(text.as_bytes()).unwrap();
         assert_eq!(
             load_calibration::<f32, _>(&mut store).unwrap().0,
-            moment_limiter::load_estimate::Calibration { angle_sensor_lag_s: Some(lag as f32), ..cal32 }
+            moment_limiter::load_estimate::Calibration { angle_sensor_lag_s: Some(lag as f32), seal_release_up_s: Some(release as f32), ..cal32 }
         );
     }
 }

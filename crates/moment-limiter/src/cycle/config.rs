@@ -35,6 +35,10 @@ impl fmt::Display for ConfigError {
 /// 2 Hz, ζ = 0.7, lags a steady rate by 2ζ/ω_n = 2·0.7/(2π·2) = 0.1114 s.
 pub const DEFAULT_ANGLE_SENSOR_LAG_S: f64 = 2.0 * 0.7 / (2.0 * core::f64::consts::PI * 2.0);
 
+/// The seals' release time the limiter assumes when its calibration has
+/// none (s; see [`LimiterConfig::seal_release_s`]).
+pub const DEFAULT_SEAL_RELEASE_S: f64 = 0.5;
+
 /// Everything the limiter is configured with (constant while it runs).
 #[derive(Debug, Clone, PartialEq)]
 pub struct LimiterConfig<T> {
@@ -58,7 +62,9 @@ pub struct LimiterConfig<T> {
     pub angle_sensor_lag_s: T,
     /// Time constant (s) with which the friction of the last motion is taken
     /// to leave the force once the boom is still (the seals release; see
-    /// [`crate::load_estimate`]).
+    /// [`crate::load_estimate`]). After a raise, a calibration that holds
+    /// one ([`Calibration::seal_release_up_s`]) overrides it
+    /// ([`Self::effective_seal_release_s`]; [`crate::seal_release`]).
     pub seal_release_s: T,
     /// Crane geometry for the bank of rope hypotheses and their
     /// pendulums ([`crate::static_load`]); `None` turns the rope and swing
@@ -100,7 +106,7 @@ impl<T: Real> LimiterConfig<T> {
             filter_stages: 4,
             direction: DirectionThresholds::standard(),
             angle_sensor_lag_s: T::lit(DEFAULT_ANGLE_SENSOR_LAG_S),
-            seal_release_s: T::lit(0.5),
+            seal_release_s: T::lit(DEFAULT_SEAL_RELEASE_S),
             swing: Some(SwingGeometry::coles_930()),
             capacity: Capacity::standard(),
             thresholds: Thresholds::standard(),
@@ -115,6 +121,18 @@ impl<T: Real> LimiterConfig<T> {
     /// calibration's, if it holds one, else the configured default.
     pub fn effective_angle_sensor_lag_s(&self) -> T {
         self.calibration.angle_sensor_lag_s.unwrap_or(self.angle_sensor_lag_s)
+    }
+
+    /// The seals' release time the limiter takes the friction of the last
+    /// motion off with (s), given the friction in the force: after a raise
+    /// the calibration's, if it holds one, else (and after a lowering) the
+    /// configured one ([`crate::seal_release`]).
+    pub fn effective_seal_release_s(&self, friction: crate::load_estimate::Friction) -> T {
+        use crate::load_estimate::{Direction, Friction};
+        match (friction, self.calibration.seal_release_up_s) {
+            (Friction::Static { last_moving: Some(Direction::Up) }, Some(s)) => s,
+            _ => self.seal_release_s,
+        }
     }
 
     /// Checks every part.

@@ -42,7 +42,7 @@ pub mod report;
 mod signal_chain;
 
 pub use config::{
-    ConfigError, LimiterConfig, DEFAULT_ANGLE_SENSOR_LAG_S, EVENT_LOG_LEN, UTILIZATION_CEILING,
+    ConfigError, LimiterConfig, DEFAULT_ANGLE_SENSOR_LAG_S, DEFAULT_SEAL_RELEASE_S, EVENT_LOG_LEN, UTILIZATION_CEILING,
 };
 pub use report::{Estimate, StepReport};
 

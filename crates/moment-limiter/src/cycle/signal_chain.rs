@@ -315,7 +315,8 @@ impl<T: Real, M: HookLoadModel<T>> Limiter<T, M> {
         };
         // The seals release at standstill (see crate::load_estimate).
         self.static_friction_share = if direction == Direction::Still {
-            self.static_friction_share / exp_taylor3(dt_s / self.config.seal_release_s)
+            let last = self.direction.friction();
+            self.static_friction_share / exp_taylor3(dt_s / self.config.effective_seal_release_s(last))
         } else {
             T::lit(1.0)
         };

@@ -2,7 +2,7 @@
 //! writer, `no_std` and without a heap, shared by `crane-sim` and the
 //! firmware (SPEC §4.9) so the two cannot disagree about a file.
 //!
-//! ## Schema, version 4 (versions 1, 2 and 3 still read)
+//! ## Schema, version 5 (versions 1–4 still read)
 //!
 //! One JSON object; **every key is required, no other key is allowed**, each
 //! value is a JSON number within the bounds below (finite; the bounds are
@@ -11,7 +11,7 @@
 //!
 //! | key | unit | bounds | why |
 //! |---|---|---|---|
-//! | `version` | — | 4 (or 3, 2, 1) | the schema version of the file |
+//! | `version` | — | 5 (or 4, 3, 2, 1) | the schema version of the file |
 //! | `friction_up_n` | N | 0 … 40 000 | constant part a of the cylinder's seal friction luffing up: ≤ 5 % of the 831 kN the cylinder exerts at 200 bar |
 //! | `friction_down_n` | N | 0 … 40 000 | the same, luffing down |
 //! | `force_offset_n` | N | −25 000 … 25 000 | zero-load force offset: ≤ 3 % of 831 kN (both transducers' ±2 % zero tolerance, 16.6 kN, plus the model's error at W = 0) |
@@ -23,6 +23,7 @@
 //! | `angle_sensor_lag_s` | s | 0 … 0.5 | the angle sensor's lag behind the boom (first-order equivalent, [`crate::calibration`]; a pendulum's 2ζ/ω_n): half a second misreads a 10 s move by 4°, a broken or badly mounted sensor |
 //! | `friction_up_per_rate` | N·s/rad | 0 … 400 000 | the part c of the friction luffing up that grows with the boom's rate ω (friction = a + b·\|F\| + c·\|ω\|, [`crate::load_estimate`]): 40 kN, the constant part's bound, at 0.1 rad/s (a 10 s luff over 57°) |
 //! | `friction_down_per_rate` | N·s/rad | 0 … 400 000 | the same, luffing down |
+//! | `seal_release_up_s` | s | 0.01 … 60 | the time constant with which the seals release a raise's friction once the boom is still ([`crate::seal_release`]), counted from when the limiter sees the stop: from seals that let go at once to seals that stay stuck for a minute (after a lowering the limiter keeps its configured one) |
 //!
 //! **Version 1** files (written before the seal law) have the first six
 //! keys only and read as b = 0 (constant friction per direction), exactly
@@ -33,11 +34,15 @@
 //! aligns with its configured lag, exactly as it did when they were
 //! written. **Version 3** files (written before the friction's part that
 //! grows with the rate was learned) have the first nine keys and read as
-//! c = 0, the friction they were applied with. A key a file's version does
-//! not have is refused. The writer writes version 4; a calibration without
-//! a lag is written with the
+//! c = 0, the friction they were applied with. **Version 4** files (written
+//! before the seals' release was learned) have the first eleven keys and
+//! read with no release time ([`Calibration::seal_release_up_s`] `None`): the
+//! limiter takes friction off with its configured one, as it did when they
+//! were written. A key a file's version does not have is refused. The
+//! writer writes version 5; a calibration without a lag is written with the
 //! standard configuration's lag ([`crate::cycle::DEFAULT_ANGLE_SENSOR_LAG_S`],
-//! what the limiter used for it).
+//! what the limiter used for it), one without a release time with the
+//! standard configuration's ([`crate::cycle::DEFAULT_SEAL_RELEASE_S`]).
 //!
 //! A file is refused with an error that names the key and, for a value out
 //! of bounds, the bound and its reason: an empty object, an array, a value of
@@ -61,9 +66,16 @@ use crane_model::Real;
 use crate::load_estimate::Calibration;
 
 /// The schema version the writer writes (the reader also reads
-/// [`CALIBRATION_VERSION_1`], [`CALIBRATION_VERSION_2`] and
-/// [`CALIBRATION_VERSION_3`]).
-pub const CALIBRATION_VERSION: u32 = 4;
+/// [`CALIBRATION_VERSION_1`], [`CALIBRATION_VERSION_2`],
+/// [`CALIBRATION_VERSION_3`] and [`CALIBRATION_VERSION_4`]).
+pub const CALIBRATION_VERSION: u32 = 5;
+
+/// The fourth schema version: the friction per unit rate, no seals'
+/// release time (the first [`V4_KEYS`] keys of [`CALIBRATION_KEYS`]).
+pub const CALIBRATION_VERSION_4: u32 = 4;
+
+/// Number of keys of schema version 4 (the first ones of [`CALIBRATION_KEYS`]).
+pub const V4_KEYS: usize = 11;
 
 /// The third schema version: the seal law and the lag, no friction per
 /// unit rate (the first [`V3_KEYS`] keys of [`CALIBRATION_KEYS`]).
@@ -79,8 +91,8 @@ pub const CALIBRATION_VERSION_2: u32 = 2;
 /// Number of keys of schema version 2 (the first ones of [`CALIBRATION_KEYS`]).
 pub const V2_KEYS: usize = 8;
 
-/// Number of keys of schema version 4.
-pub const KEY_COUNT: usize = 11;
+/// Number of keys of schema version 5.
+pub const KEY_COUNT: usize = 12;
 
 /// The first schema version: constant friction per direction (the first
 /// [`V1_KEYS`] keys of [`CALIBRATION_KEYS`]).
@@ -110,9 +122,9 @@ pub struct KeySpec {
     pub why: &'static str,
 }
 
-/// The values of schema version 4 (the first [`V1_KEYS`] are version 1's,
+/// The values of schema version 5 (the first [`V1_KEYS`] are version 1's,
 /// the first [`V2_KEYS`] version 2's, the first [`V3_KEYS`] version 3's,
-/// in their order; see the module doc
+/// the first [`V4_KEYS`] version 4's, in their order; see the module doc
 /// for the reasons). The one bound table: the JSON reader, the writer and
 /// the firmware's blob all check against it.
 pub const CALIBRATION_KEYS: [KeySpec; KEY_COUNT] = [
@@ -193,6 +205,13 @@ pub const CALIBRATION_KEYS: [KeySpec; KEY_COUNT] = [
         max: crate::load_estimate::MAX_PER_RATE_N_S,
         why: "40 kN, the constant part's bound, at 0.1 rad/s (a 10 s luff over 57 degrees)",
     },
+    KeySpec {
+        key: "seal_release_up_s",
+        unit: "s",
+        min: crate::load_estimate::MIN_SEAL_RELEASE_S,
+        max: crate::load_estimate::MAX_SEAL_RELEASE_S,
+        why: "from seals that let go at once to seals stuck for a minute",
+    },
 ];
 
 /// Longest unknown key kept for the error message (longer ones are cut).
@@ -272,7 +291,7 @@ impl fmt::Display for CalibrationFileError {
             E::UnsupportedVersion(v) => write!(
                 f,
                 "key `{VERSION_KEY}` = {}: this reader knows versions \
-                 {CALIBRATION_VERSION_1}, {CALIBRATION_VERSION_2}, {CALIBRATION_VERSION_3} and {CALIBRATION_VERSION}",
+                 {CALIBRATION_VERSION_1}, {CALIBRATION_VERSION_2}, {CALIBRATION_VERSION_3}, {CALIBRATION_VERSION_4} and {CALIBRATION_VERSION}",
                 Shown(*v)
             ),
             E::PreSchemaFile => write!(
@@ -302,8 +321,8 @@ impl fmt::Display for Shown {
 }
 
 /// Reads a calibration file (the bytes of `CAL.json`) against the schema
-/// (version 4; version 3 read as c = 0, version 2 also without a lag,
-/// version 1 also as b = 0).
+/// (version 5; version 4 read without a seals' release time, version 3
+/// also as c = 0, version 2 also without a lag, version 1 also as b = 0).
 pub fn parse_calibration<T: Real>(text: &[u8]) -> Result<Calibration<T>, CalibrationFileError> {
     read_object(text).map(|(v, keys)| calibration_from_values(&v, keys)).map_err(|e| match e {
         CalibrationFileError::Syntax { at: 0, .. } if looks_like_log(text) => CalibrationFileError::SensorLog,
@@ -326,6 +345,7 @@ pub fn keys_of_version(version: u32) -> Option<usize> {
         CALIBRATION_VERSION_1 => Some(V1_KEYS),
         CALIBRATION_VERSION_2 => Some(V2_KEYS),
         CALIBRATION_VERSION_3 => Some(V3_KEYS),
+        CALIBRATION_VERSION_4 => Some(V4_KEYS),
         CALIBRATION_VERSION => Some(KEY_COUNT),
         _ => None,
     }
@@ -334,11 +354,12 @@ pub fn keys_of_version(version: u32) -> Option<usize> {
 /// The calibration of the values of [`CALIBRATION_KEYS`], in its order
 /// (checked by the caller), converted to `T`; only the first `keys` are
 /// the file's (its version's), the others take what that version meant:
-/// b = 0 (version 1), no lag (versions 1 and 2) and c = 0 (versions 1–3).
+/// b = 0 (version 1), no lag (versions 1 and 2), c = 0 (versions 1–3) and
+/// no seals' release time (versions 1–4).
 pub fn calibration_from_values<T: Real>(values: &[f64; KEY_COUNT], keys: usize) -> Calibration<T> {
     // One conversion of the whole array: on the board each T::lit is a
     // soft-float f64 -> f32 call, and eleven inlined ones took 104 B of flash.
-    let [fu, fd, fo, p1, p2, a, bu, bd, lag, cu, cd] = values.map(T::lit);
+    let [fu, fd, fo, p1, p2, a, bu, bd, lag, cu, cd, release] = values.map(T::lit);
     let zero = T::lit(0.0);
     let (bu, bd) = if keys > V1_KEYS { (bu, bd) } else { (zero, zero) };
     let (cu, cd) = if keys > V3_KEYS { (cu, cd) } else { (zero, zero) };
@@ -354,6 +375,7 @@ pub fn calibration_from_values<T: Real>(values: &[f64; KEY_COUNT], keys: usize) 
         p2_offset_bar: p2,
         angle_offset_deg: a,
         angle_sensor_lag_s: (keys > V2_KEYS).then_some(lag),
+        seal_release_up_s: (keys > V4_KEYS).then_some(release),
     }
 }
 
@@ -367,7 +389,7 @@ pub fn check_calibration(cal: &Calibration<f64>) -> Result<(), CalibrationFileEr
     Ok(())
 }
 
-/// Writes `cal` as a schema-version-4 file (one key per line, trailing
+/// Writes `cal` as a schema-version-5 file (one key per line, trailing
 /// newline). Call [`check_calibration`] first: this writes any value.
 pub fn write_calibration_json<W: Write>(w: &mut W, cal: &Calibration<f64>) -> fmt::Result {
     write!(w, "{{\n  \"{VERSION_KEY}\": {CALIBRATION_VERSION}")?;
@@ -380,7 +402,8 @@ pub fn write_calibration_json<W: Write>(w: &mut W, cal: &Calibration<f64>) -> fm
 }
 
 /// The values of `cal` in the order of [`CALIBRATION_KEYS`] (no lag: the
-/// standard configuration's, [`crate::cycle::DEFAULT_ANGLE_SENSOR_LAG_S`]).
+/// standard configuration's, [`crate::cycle::DEFAULT_ANGLE_SENSOR_LAG_S`];
+/// no release time: [`crate::cycle::DEFAULT_SEAL_RELEASE_S`]).
 pub fn calibration_values(cal: &Calibration<f64>) -> [f64; KEY_COUNT] {
     [
         cal.friction_up_n,
@@ -395,10 +418,11 @@ pub fn calibration_values(cal: &Calibration<f64>) -> [f64; KEY_COUNT] {
             .unwrap_or(crate::cycle::DEFAULT_ANGLE_SENSOR_LAG_S),
         cal.friction_up_per_rate,
         cal.friction_down_per_rate,
+        cal.seal_release_up_s.unwrap_or(crate::cycle::DEFAULT_SEAL_RELEASE_S),
     ]
 }
 
-// Not inlined: the board image checks all eleven bounds in a loop the
+// Not inlined: the board image checks all twelve bounds in a loop the
 // compiler unrolls, and each inlined copy built its own error (1.6 KB).
 #[inline(never)]
 fn check_bounds(spec: &KeySpec, value: f64) -> Result<(), CalibrationFileError> {
@@ -482,7 +506,7 @@ impl Findings {
                 }
             };
             self.version = Some(v);
-            if [CALIBRATION_VERSION, CALIBRATION_VERSION_3, CALIBRATION_VERSION_2, CALIBRATION_VERSION_1]
+            if [CALIBRATION_VERSION, CALIBRATION_VERSION_4, CALIBRATION_VERSION_3, CALIBRATION_VERSION_2, CALIBRATION_VERSION_1]
                 .iter()
                 .any(|k| v == f64::from(*k))
             {
@@ -540,7 +564,7 @@ impl Findings {
             return Err(e);
         }
         // A known version (else `version_error` above).
-        let (version, keys) = [CALIBRATION_VERSION_1, CALIBRATION_VERSION_2, CALIBRATION_VERSION_3, CALIBRATION_VERSION]
+        let (version, keys) = [CALIBRATION_VERSION_1, CALIBRATION_VERSION_2, CALIBRATION_VERSION_3, CALIBRATION_VERSION_4, CALIBRATION_VERSION]
             .iter()
             .find(|k| version == f64::from(**k))
             .and_then(|k| Some((*k, keys_of_version(*k)?)))
@@ -725,8 +749,17 @@ impl<'a> Cursor<'a> {
 pub mod hostile {
     use super::CALIBRATION_KEYS;
 
-    /// A valid file of schema version 4 (the base the hostile cases alter).
-    pub const GOOD: &str = r#"{"version": 4, "friction_up_n": 10011.5, "friction_down_n": 9000,
+    /// A valid file of schema version 5 (the base the hostile cases alter).
+    pub const GOOD: &str = r#"{"version": 5, "friction_up_n": 10011.5, "friction_down_n": 9000,
+        "force_offset_n": -1932.4, "p1_offset_bar": 0.5, "p2_offset_bar": -0.25,
+        "angle_offset_deg": 0.0, "friction_up_per_force": 0.025,
+        "friction_down_per_force": 0.0125, "angle_sensor_lag_s": 0.2,
+        "friction_up_per_rate": 120000, "friction_down_per_rate": 80000.5,
+        "seal_release_up_s": 0.15}"#;
+
+    /// A valid file of schema version 4 (the friction per unit rate, no
+    /// seals' release time: read with the configured one).
+    pub const GOOD_V4: &str = r#"{"version": 4, "friction_up_n": 10011.5, "friction_down_n": 9000,
         "force_offset_n": -1932.4, "p1_offset_bar": 0.5, "p2_offset_bar": -0.25,
         "angle_offset_deg": 0.0, "friction_up_per_force": 0.025,
         "friction_down_per_force": 0.0125, "angle_sensor_lag_s": 0.2,
@@ -792,18 +825,28 @@ pub mod hostile {
                 "`p1_offset_bar` is given twice",
             ),
             (
-                "version 5".into(),
-                with("version", Some("5")),
-                "`version` = 5: this reader knows versions 1, 2, 3 and 4",
+                "version 6".into(),
+                with("version", Some("6")),
+                "`version` = 6: this reader knows versions 1, 2, 3, 4 and 5",
             ),
             (
                 "version 2.5".into(),
                 with("version", Some("2.5")),
-                "`version` = 2.5: this reader knows versions 1, 2, 3 and 4",
+                "`version` = 2.5: this reader knows versions 1, 2, 3, 4 and 5",
+            ),
+            (
+                "version 4 with the release key".into(),
+                with("version", Some("4")),
+                "`seal_release_up_s` is not in calibration schema version 4",
+            ),
+            (
+                "version 4 without version 4's keys".into(),
+                GOOD_V4.replace(", \"friction_down_per_rate\": 80000.5", ""),
+                "`friction_down_per_rate` is missing",
             ),
             (
                 "version 3 with a rate key".into(),
-                with("version", Some("3")),
+                with("version", Some("3")).replace(",\n        \"seal_release_up_s\": 0.15", ""),
                 "`friction_up_per_rate` is not in calibration schema version 3",
             ),
             (
@@ -896,9 +939,10 @@ mod tests {
         let mut text = String::new();
         write_calibration_json(&mut text, &c).unwrap();
         assert_eq!(parse_calibration::<f64>(text.as_bytes()).unwrap(), c);
-        assert!(text.starts_with("{\n  \"version\": 4,\n"), "{text}");
+        assert!(text.starts_with("{\n  \"version\": 5,\n"), "{text}");
         assert_eq!(c.friction_up_per_force, 0.025);
         assert_eq!(c.angle_sensor_lag_s, Some(0.2));
+        assert_eq!(c.seal_release_up_s, Some(0.15));
         assert_eq!((c.friction_up_per_rate, c.friction_down_per_rate), (120_000.0, 80_000.5));
         // BOM and f32.
         let bom = format!("\u{feff}{GOOD}");
@@ -907,19 +951,44 @@ mod tests {
         assert_eq!(c32.angle_sensor_lag_s, Some(0.2_f32));
     }
 
+    /// A version-4 file (before the seals' release was learned) reads
+    /// without a release time: the limiter takes friction off with its
+    /// configured one, as it did. Written again, it is a version-5 file
+    /// with that time.
+    #[test]
+    fn a_version_4_file_reads_without_a_release_time() {
+        use super::hostile::GOOD_V4;
+        let c4 = parse_calibration::<f64>(GOOD_V4.as_bytes()).unwrap();
+        let c5 = parse_calibration::<f64>(GOOD.as_bytes()).unwrap();
+        assert_eq!(c4, Calibration { seal_release_up_s: None, ..c5 });
+        use crate::load_estimate::{Direction, Friction};
+        let after_raise = Friction::Static { last_moving: Some(Direction::Up) };
+        let after_lowering = Friction::Static { last_moving: Some(Direction::Down) };
+        let config = crate::cycle::LimiterConfig { calibration: c4, ..crate::cycle::LimiterConfig::standard() };
+        assert_eq!(config.effective_seal_release_s(after_raise), crate::cycle::DEFAULT_SEAL_RELEASE_S);
+        let config = crate::cycle::LimiterConfig { calibration: c5, ..config };
+        assert_eq!(config.effective_seal_release_s(after_raise), 0.15);
+        // After a lowering the configured one (see crate::seal_release).
+        assert_eq!(config.effective_seal_release_s(after_lowering), crate::cycle::DEFAULT_SEAL_RELEASE_S);
+        let mut text = String::new();
+        write_calibration_json(&mut text, &c4).unwrap();
+        assert!(text.contains("\"seal_release_up_s\": 0.5") && text.starts_with("{\n  \"version\": 5,\n"), "{text}");
+        assert_eq!(parse_calibration::<f64>(text.as_bytes()).unwrap(), Calibration { seal_release_up_s: Some(0.5), ..c4 });
+    }
+
     /// A version-3 file (before the friction's part that grows with the
     /// rate) reads as c = 0, the friction it was applied with, and is
-    /// written again as version 4 with c = 0.
+    /// written again as version 5 with c = 0 (and the standard release).
     #[test]
     fn a_version_3_file_reads_with_no_friction_per_rate() {
-        use super::hostile::GOOD_V3;
+        use super::hostile::{GOOD_V3, GOOD_V4};
         let c3 = parse_calibration::<f64>(GOOD_V3.as_bytes()).unwrap();
-        let c4 = parse_calibration::<f64>(GOOD.as_bytes()).unwrap();
+        let c4 = parse_calibration::<f64>(GOOD_V4.as_bytes()).unwrap();
         assert_eq!(c3, Calibration { friction_up_per_rate: 0.0, friction_down_per_rate: 0.0, ..c4 });
         let mut text = String::new();
         write_calibration_json(&mut text, &c3).unwrap();
-        assert!(text.contains("\"friction_up_per_rate\": 0.0") && text.starts_with("{\n  \"version\": 4,\n"), "{text}");
-        assert_eq!(parse_calibration::<f64>(text.as_bytes()).unwrap(), c3);
+        assert!(text.contains("\"friction_up_per_rate\": 0.0") && text.starts_with("{\n  \"version\": 5,\n"), "{text}");
+        assert_eq!(parse_calibration::<f64>(text.as_bytes()).unwrap(), Calibration { seal_release_up_s: Some(0.5), ..c3 });
     }
 
     #[test]
@@ -933,11 +1002,18 @@ mod tests {
         assert_eq!(config.effective_angle_sensor_lag_s(), crate::cycle::DEFAULT_ANGLE_SENSOR_LAG_S);
         let config = crate::cycle::LimiterConfig { calibration: c3, ..config };
         assert_eq!(config.effective_angle_sensor_lag_s(), 0.2);
-        // Re-written, it is a version-4 file with the standard lag.
+        // Re-written, it is a version-5 file with the standard lag.
         let mut text = String::new();
         write_calibration_json(&mut text, &c2).unwrap();
         let back = parse_calibration::<f64>(text.as_bytes()).unwrap();
-        assert_eq!(back, Calibration { angle_sensor_lag_s: Some(crate::cycle::DEFAULT_ANGLE_SENSOR_LAG_S), ..c2 });
+        assert_eq!(
+            back,
+            Calibration {
+                angle_sensor_lag_s: Some(crate::cycle::DEFAULT_ANGLE_SENSOR_LAG_S),
+                seal_release_up_s: Some(crate::cycle::DEFAULT_SEAL_RELEASE_S),
+                ..c2
+            }
+        );
     }
 
     #[test]
@@ -973,13 +1049,17 @@ mod tests {
                 ..c2
             }
         );
-        // Re-written, it is a version-4 file with b = 0 and the standard lag.
+        // Re-written, it is a version-5 file with b = 0 and the standard lag.
         let mut text = String::new();
         write_calibration_json(&mut text, &c1).unwrap();
         assert!(text.contains("\"friction_up_per_force\": 0.0"), "{text}");
         assert_eq!(
             parse_calibration::<f64>(text.as_bytes()).unwrap(),
-            Calibration { angle_sensor_lag_s: Some(crate::cycle::DEFAULT_ANGLE_SENSOR_LAG_S), ..c1 }
+            Calibration {
+                angle_sensor_lag_s: Some(crate::cycle::DEFAULT_ANGLE_SENSOR_LAG_S),
+                seal_release_up_s: Some(crate::cycle::DEFAULT_SEAL_RELEASE_S),
+                ..c1
+            }
         );
     }
 
