@@ -177,10 +177,10 @@ fn refused_calibration_files_and_blobs_exit_1_naming_the_reason() {
     };
     let mut flipped = good.clone();
     flipped[20] ^= 0x04;
-    let mut schema5 = good.clone();
-    schema5[6] = 5;
-    let mut format5 = good.clone();
-    format5[4..6].copy_from_slice(&(BLOB_FORMAT + 1).to_le_bytes());
+    let mut schema6 = good.clone();
+    schema6[6] = 6;
+    let mut format6 = good.clone();
+    format6[4..6].copy_from_slice(&(BLOB_FORMAT + 1).to_le_bytes());
     let mut p1_50 = good.clone();
     p1_50[8 + 3 * 8..8 + 4 * 8].copy_from_slice(&50.0f64.to_le_bytes());
     let mut nan = good.clone();
@@ -208,14 +208,14 @@ fn refused_calibration_files_and_blobs_exit_1_naming_the_reason() {
             "wrong length",
         ),
         (
-            "schema version 5",
-            with_crc(schema5),
-            "unknown calibration schema version 5",
+            "schema version 6",
+            with_crc(schema6),
+            "unknown calibration schema version 6",
         ),
         (
-            "format 5",
-            with_crc(format5),
-            "unknown calibration blob format 5",
+            "format 6",
+            with_crc(format6),
+            "unknown calibration blob format 6",
         ),
         (
             "p1_offset_bar = 50",
