@@ -570,7 +570,7 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
         )?,
         (Some(r), None) => writeln!(
             out,
-            "  seals' release NOT observable ({} samples at rest after the up runs' stops, {min} needed, and residual rms {:.1} N at best against {:.1} N at worst, at most half needed): the default {default_release_s:.2} s kept; let each up run rest 5 s after its stop",
+            "  seals' release NOT observable (samples at rest after the up runs' stops: {}, {min} needed; residual rms {:.1} N at best against {:.1} N at worst, at most half of it needed): the default {default_release_s:.2} s kept; let each up run rest 5 s after its stop",
             r.samples,
             r.rms_n.iter().copied().fold(f64::INFINITY, f64::min),
             r.rms_n.iter().copied().fold(0.0, f64::max)
