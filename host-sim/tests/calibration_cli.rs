@@ -297,7 +297,7 @@ fn learns_the_seal_law_from_unloaded_runs_and_better_with_a_test_weight() {
     assert!(stdout.contains("up   a=") && stdout.contains("down a=") && stdout.contains("residual rms="), "{stdout}");
     assert!(stdout.contains("not observable") && stdout.contains("pendulum"), "{stdout}");
     let j = read_json(&cal);
-    assert_eq!(j["version"], 4);
+    assert_eq!(j["version"], 5);
     // A constant law learned unloaded (≈ 87 kN) is off at a heavy lift's
     // 300 kN by b·213 kN: 6.4 kN up, 4.3 kN down.
     let (bu, bd) = (key(&j, "friction_up_per_force"), key(&j, "friction_down_per_force"));
@@ -434,7 +434,7 @@ fn learns_the_angle_sensors_lag_from_unloaded_runs() {
             let stdout = text(&out.stdout);
             assert!(stdout.contains("angle sensor lag") && stdout.contains("s learned"), "{stdout}");
             let j = read_json(&cal);
-            assert_eq!(j["version"], 4);
+            assert_eq!(j["version"], 5);
             let lag = key(&j, "angle_sensor_lag_s");
             assert!(stdout.contains(&format!("angle_sensor_lag_s={lag:.3}")), "{stdout}");
             let lag_line = stdout.lines().find(|l| l.contains("angle sensor lag")).unwrap_or_default();
@@ -597,7 +597,7 @@ fn learns_a_friction_that_grows_with_the_rate_from_runs_at_two_speeds() {
     assert!(stdout.contains("c learned") && stdout.contains("friction_up_per_rate="), "{stdout}");
     assert!(stdout.contains("angle sensor lag") && stdout.contains("s learned"), "{stdout}");
     let j = read_json(&cal);
-    assert_eq!(j["version"], 4);
+    assert_eq!(j["version"], 5);
     for w in [0.07, 0.023, 0.005] {
         for (truth, learned) in viscous_frictions(&j, w, 60.0) {
             println!("at {w} rad/s: synthesized {truth:.0} N, learned {learned:.0} N");

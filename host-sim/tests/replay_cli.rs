@@ -220,7 +220,7 @@ fn calibrate_learns_friction_and_replay_uses_it() {
     // residuals are offset + friction up and offset − friction down, the
     // friction a + b·F at the empty boom's force in these runs (≈ 85 kN).
     let key = |k: &str| j[k].as_f64().unwrap_or_else(|| panic!("no `{k}` in {j}"));
-    assert_eq!(j["version"], 4);
+    assert_eq!(j["version"], 5);
     let f = 85_000.0;
     let up = key("force_offset_n") + key("friction_up_n") + key("friction_up_per_force") * f;
     let down =
