@@ -614,9 +614,11 @@ impl<T: Real> CalibrationLearner<T> {
                 // After a raise's stop: the seals' release (the share's
                 // time since the stop, t = −τ₀·ln(share)).
                 let share = m.static_friction_share;
-                let since_s = -self.runs_release_s * share.ln();
-                if m.friction == (Friction::Static { last_moving: Some(Direction::Up) }) && share > T::lit(0.0) && since_s <= T::lit(RELEASE_WINDOW_S) {
-                    self.release.add(since_s, (at_load + inertia).abs(), r);
+                if m.friction == (Friction::Static { last_moving: Some(Direction::Up) }) && share > T::lit(0.0) {
+                    let since_s = -self.runs_release_s * share.ln();
+                    if since_s <= T::lit(RELEASE_WINDOW_S) {
+                        self.release.add(since_s, (at_load + inertia).abs(), r);
+                    }
                 }
                 return Ok(());
             }

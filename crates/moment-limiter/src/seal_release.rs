@@ -109,11 +109,6 @@ impl<T: Real> ReleaseSums<T> {
         Self { n: 0, r: z, rr: z, by_candidate: [[z; SUMS]; RELEASE_CANDIDATES] }
     }
 
-    /// Number of samples.
-    pub fn samples(&self) -> u32 {
-        self.n
-    }
-
     /// Adds a sample at rest `since_stop_s` after the stop was seen: the
     /// residual `r_n` at the true piston force `force_n` (N).
     pub fn add(&mut self, since_stop_s: T, force_n: T, r_n: T) {

@@ -468,7 +468,6 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
         let (u, d) = check.max_residual_n();
         max = (max.0.max(u), max.1.max(d));
     }
-    let config = LimiterConfig { calibration: cal, ..LimiterConfig::<f64>::standard() };
     let mut json = String::new();
     config_file::write_calibration_json(&mut json, &cal)?;
     std::fs::write(&args.out, json)
@@ -485,7 +484,7 @@ pub fn run(args: CalibrateArgs) -> anyhow::Result<u8> {
         cal.friction_down_per_rate,
         cal.force_offset_n,
         lag.lag_s,
-        config.effective_seal_release_s(moment_limiter::load_estimate::Friction::Static { last_moving: Some(moment_limiter::load_estimate::Direction::Up) }),
+        cal.seal_release_up_s.unwrap_or(moment_limiter::cycle::DEFAULT_SEAL_RELEASE_S),
         args.out.display()
     )?;
     let runs_text = if known.is_empty() {
