@@ -1277,12 +1277,14 @@ fn lowerings_2_to_10_s_after_a_load_added_at_rest() -> (Vec<String>, f64, f64) {
 /// KNOWN GAP, measured (f64): [`lowering_5_s_after_a_load_added_at_rest_soon_after_a_stop`]
 /// with the lowering begun 2–10 s after the take-up instead of 5 s. Cut
 /// late, where nothing has weighed the new load when the lowering starts:
-/// 2 s after, up to true u 1.081; 3 s, 1.082 (the 6 m rope, and the
-/// thesis's rope with seal friction rated at 30°); 4 s, 1.105 (the 3 m and
-/// 8.9 m ropes, rated at 45°); 7 s, 1.063 (the thesis's rope, seal
+/// 2 s after, up to true u 1.081; 3 s, 1.082 (the 6 m rope, where W_fast at
+/// rest never passed the old weighing); 7 s, 1.063 (the thesis's rope, seal
 /// friction). Cut early: 6 s after, at 0.887 (the 3 m rope); 7 s, 0.893
-/// (the 8.9 m rope). 4.5–5.5 s, 8 s and 10 s after, within the bounds
-/// ([`lowering_8_or_10_s_after_a_load_added_at_rest`]). Before the averages
+/// (the 8.9 m rope). 4–5.5 s, 8 s and 10 s after, within the bounds
+/// ([`lowering_8_or_10_s_after_a_load_added_at_rest`]). 4 s after was cut
+/// up to 1.105 (the 3 m and 8.9 m ropes, rated at 45°) until the swing's
+/// midrange went on into a lowering that doubts its start
+/// (`moment_limiter::static_load::MIDRANGE_CARRY_S`; now from 0.952). Before the averages
 /// took up W_fast in a move that starts from a doubted weighing
 /// (`moment_limiter::static_load`, "A load added at rest that nothing
 /// weighed"), 2–4 s after was cut up to 1.127, 1.116 and 1.164, and 8 s
@@ -1294,21 +1296,21 @@ fn lowerings_2_to_10_s_after_a_load_added_at_rest() -> (Vec<String>, f64, f64) {
 /// swing's midrange 1.2 s after the one before, as until this test, 4.5–6 s
 /// was cut up to 1.13.
 #[test]
-#[ignore = "KNOWN GAP: a lowering past the rated radius 2-7 s after a load added at rest 3 s after a raise to 80 deg is cut late (true u up to 1.105) or early (from 0.887)"]
+#[ignore = "KNOWN GAP: a lowering past the rated radius 2-7 s after a load added at rest 3 s after a raise to 80 deg is cut late (true u up to 1.082) or early (from 0.887)"]
 fn a_lowering_2_to_10_s_after_a_load_added_at_rest_known_gap() {
     let (failures, _, _) = lowerings_2_to_10_s_after_a_load_added_at_rest();
     assert!(failures.is_empty(), "{failures:#?}");
 }
 
 /// The known gap above pinned at its measured size, so that it cannot widen
-/// unseen: no sample of those lowerings at a true u over 1.11 goes uncut
-/// (1.105 measured; 1.164 before the averages took up W_fast in a move that
-/// starts from a doubted weighing), and none is cut before true u 0.88
-/// (0.887).
+/// unseen: no sample of those lowerings at a true u over 1.09 goes uncut
+/// (1.082 measured; 1.105 before the swing's midrange went on into the
+/// lowering, 1.164 before the averages took up W_fast in a move that starts
+/// from a doubted weighing), and none is cut before true u 0.88 (0.887).
 #[test]
 fn a_lowering_2_to_10_s_after_a_load_added_at_rest_stays_as_measured() {
     let (_, highest_uncut, lowest_onset) = lowerings_2_to_10_s_after_a_load_added_at_rest();
-    assert!(highest_uncut <= 1.11 && lowest_onset >= 0.88, "highest true u not cut {highest_uncut:.3}, lowest OVERLOAD onset {lowest_onset:.3}");
+    assert!(highest_uncut <= 1.09 && lowest_onset >= 0.88, "highest true u not cut {highest_uncut:.3}, lowest OVERLOAD onset {lowest_onset:.3}");
 }
 
 /// [`lowering_5_s_after_a_load_added_at_rest_soon_after_a_stop`] with the
@@ -1329,6 +1331,30 @@ fn lowering_8_or_10_s_after_a_load_added_at_rest(precision: Precision) {
         failures.extend(f);
     }
     assert!(failures.is_empty(), "{failures:#?}");
+}
+
+/// [`lowering_5_s_after_a_load_added_at_rest_soon_after_a_stop`] with the
+/// lowering begun 4 s after the take-up, before the swing's midrange has
+/// read the new load's first crest with the trough after it: cut between
+/// true u 1/1.1 and 1.05 and never released over it (measured, f64 and
+/// f32: from 0.947). Until the midrange went on into a lowering that doubts its start
+/// (`moment_limiter::static_load::MIDRANGE_CARRY_S`), the 3 m and 8.9 m
+/// ropes rated at 45° were cut only at true u 1.076–1.105: the lowering
+/// started from the old load's weighing.
+fn lowering_4_s_after_a_load_added_at_rest(precision: Precision) {
+    let (failures, highest_uncut, lowest_onset) = lowering_after_a_load_added_at_rest(precision, 3.0, 4.0);
+    println!("{precision:?}: highest true u not cut {highest_uncut:.3}, lowest OVERLOAD onset {lowest_onset:.3}");
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
+#[test]
+fn a_lowering_4_s_after_a_load_added_at_rest_f64() {
+    lowering_4_s_after_a_load_added_at_rest(Precision::F64);
+}
+
+#[test]
+fn a_lowering_4_s_after_a_load_added_at_rest_f32() {
+    lowering_4_s_after_a_load_added_at_rest(Precision::F32);
 }
 
 #[test]

@@ -115,7 +115,10 @@
 //!   out of phase (to 0.53 of the load at 51°, lowering from 80° on the
 //!   8.9 m rope). Lowered 2–4 s
 //!   after the take-up, before anything weighed the load at rest, those
-//!   lowerings were cut up to true u 1.164; now 1.105 (the known gap in
+//!   lowerings were cut up to true u 1.164; then 1.105. In such a move the
+//!   swing's midrange begun at rest goes on following into a lowering for
+//!   [`MIDRANGE_CARRY_S`] (below, "Settled after a move: a load added,
+//!   weighed by its swing"): now up to 1.082 (the known gap in
 //!   `a_lowering_2_to_10_s_after_a_load_added_at_rest_*`: where W_fast at
 //!   rest never passed the old weighing, nothing doubts it). Once the
 //!   swing's midrange or the mean over one swing period weighs the load at
@@ -912,9 +915,27 @@
 //! and the next trough is read about 5.8 s after the take-up began, 0.2 s
 //! before a lowering begun 5 s after the 1 s take-up: cut within the bounds
 //! (`a_lowering_5_s_after_a_load_added_at_rest_soon_after_a_stop_*`; 1.13
-//! before [`crate::swing_midrange::HALF_SWING_S`] was 1.0 s), one begun
-//! 2–4 s after is not (cut up to true u 1.105,
-//! `a_lowering_2_to_10_s_after_a_load_added_at_rest_known_gap`).
+//! before [`crate::swing_midrange::HALF_SWING_S`] was 1.0 s).
+//!
+//! **Into the move.** A lowering begun before the trough after that crest
+//! started from the old load's weighing (the move ends the rest's
+//! following) and was cut up to true u 1.105, 4 s after the take-up on the
+//! 3 m and the 8.9 m ropes rated at 45°: the move's averages climbed to the
+//! new load only 9 s into it. So a lowering that doubts its start (above,
+//! "A load added at rest that nothing weighed") goes on following for
+//! [`MIDRANGE_CARRY_S`], longer than half the longest rope's period: W₁ is
+//! the load the force reads at factor 1 at the moving boom's angle, put back
+//! into the rest's force by the rest's F_0 + F_W(W) (the pull's units must
+//! not change with the angle, which doubles the arm from 80° to 72°), and
+//! the midrange of the rest's crest and the trough in the move is a floor
+//! under the reading and the averages as at rest. A lowering's start only
+//! deepens the trough (the load sinks with the tip), so the floor errs low;
+//! a raise's lifts it, and a raise brings the load in: it ends the
+//! following as before.
+//! Those lowerings are now cut from true u 0.952–0.980; begun 2–3 s after
+//! the take-up, where W_fast had not passed the old weighing at rest and
+//! nothing doubts it, still up to 1.082
+//! (`a_lowering_2_to_10_s_after_a_load_added_at_rest_known_gap`).
 //!
 //! ## Settled, but for the angle's noise
 //!
@@ -1027,8 +1048,9 @@
 //! (`a_lowering_after_a_load_added_at_rest_*`). Added 3 s after the stop,
 //! before the period is known, where no rope follows the swing, the swing's
 //! midrange weighs it 5 s after its take-up (above), not sooner: lowered
-//! 2–4 s after the take-up, that rope is cut up to true u 1.105 (1.164
-//! before a move that doubts its start took up W_fast, above); and
+//! 2–3 s after the take-up, ropes that nothing doubts are cut up to true u
+//! 1.082 (4 s after, 1.105 before the midrange went on into such a move,
+//! 1.164 before it took up W_fast, above); and
 //! lowered 6–7 s after, several ropes are cut early, from 0.887
 //! (`a_lowering_2_to_10_s_after_a_load_added_at_rest_known_gap`).
 //!
@@ -1174,6 +1196,12 @@ pub const BOUNCE_WINDOW_S: f64 = 2.5;
 /// held at rest (s): two swings of the longest rope of the bank (9.5 s at
 /// 22 m). See [`StaticLoadBank::update`].
 pub const REST_HOLD_S: f64 = 20.0;
+
+/// How long into a lowering that doubts its start (see the module doc, "A
+/// load added at rest that nothing weighed") the swing's midrange begun at rest
+/// goes on following (s): longer than half the longest rope's period (4.7 s
+/// at 22 m), within which the trough after the crest the rest saw comes.
+pub const MIDRANGE_CARRY_S: f64 = 5.0;
 
 /// Spread of the possible ropes' factors (f_max/f_min − 1) beyond which the
 /// force cannot weigh the load at rest and the move's weighing is held.
@@ -1402,6 +1430,13 @@ pub struct StaticLoadBank<T> {
     /// The swing's midrange since a load was added at rest
     /// ([`crate::swing_midrange`]).
     midrange: SwingMidrange<T>,
+    /// The force at rest as a function of W where the midrange was last
+    /// followed at rest: a lowering that doubts its start goes on following
+    /// in its units.
+    midrange_terms: Option<Quadratic<T>>,
+    /// The boom's filtered rate was negative at the last
+    /// [`advance`](Self::advance): it is lowered, if it moves.
+    falling: bool,
     /// While a lift-off before any move is followed, the highest load it
     /// has reached (kg), whose give the pendulums have taken (see the
     /// module doc, "A lift-off: the boom's give swings the load").
@@ -1521,6 +1556,8 @@ impl<T: Real> StaticLoadBank<T> {
             weighing_doubted: false,
             hanging_kg: None,
             midrange: SwingMidrange::new(),
+            midrange_terms: None,
+            falling: false,
             lifting_kg: None,
             empty_s: T::lit(0.0),
             lift_base_n: None,
@@ -1929,6 +1966,7 @@ impl<T: Real> StaticLoadBank<T> {
             T::lit(0.0)
         };
         let still = starting || rate_rad_s.abs() <= T::lit(MOVING_RAD_S);
+        self.falling = rate_rad_s < T::lit(0.0);
         let settled = rate_rad_s.abs() <= T::lit(SETTLED_RAD_S);
         self.unsettled_s = if settled { T::lit(0.0) } else { self.unsettled_s + self.dt_s };
         // Settled but for the angle noise's brief excursions (see
@@ -2455,11 +2493,19 @@ impl<T: Real> StaticLoadBank<T> {
         // A load added at rest while it swings: the swing's midrange, once
         // it has turned at a crest and a trough, is a floor under the
         // reading and the averages the next move starts from (see
-        // [`crate::swing_midrange`]).
+        // [`crate::swing_midrange`]). A lowering that doubts its start goes
+        // on following for MIDRANGE_CARRY_S, the load W₁ reads at factor 1 put
+        // back into the rest's force, so that a crest seen at rest pairs
+        // with the trough after it (see the module doc, "A load added at
+        // rest that nothing weighed").
         let resting = swinging_at_rest && !self.light_at_stop;
         let added = matches!(self.hold_kg, Some(h) if fast >= h * T::lit(1.0 + load_jump::JUMP));
+        let carry = !still && self.falling && self.weighing_doubted && self.midrange.following() && self.moving_s <= T::lit(MIDRANGE_CARRY_S);
         let mid_kg = if resting && (added || self.midrange.following()) {
+            self.midrange_terms = Some(terms.at_rest);
             self.midrange.push(force - terms.at_rest.at_zero, self.dt_s, gain).and_then(|f| terms.at_rest.solve(f + terms.at_rest.at_zero))
+        } else if let (true, Some(q), Some(w)) = (carry, self.midrange_terms, terms.at_rest.solve(force)) {
+            self.midrange.push(q.at(w) - q.at_zero, self.dt_s, gain).and_then(|f| q.solve(f + q.at_zero))
         } else {
             self.midrange.clear();
             None

@@ -66,6 +66,11 @@
 //! load's crest against the new one's trough): the bank errs toward cutting
 //! there, as with the held weighing.
 //!
+//! A lowering begun while it follows, before the trough after the new
+//! load's first crest, goes on following for a while, in the rest's units
+//! ([`crate::static_load::MIDRANGE_CARRY_S`]; [`crate::static_load`], "Into
+//! the move"): the lowering's start only deepens that trough.
+//!
 //! The cost: two stages and a few comparisons a cycle while it follows, no
 //! loop, no heap.
 
