@@ -810,7 +810,8 @@
 //! ρ ≥ 1.1 on, for 2 s, every average and the held weighing are multiplied
 //! by ρ > 1 and the held weighing is raised to the voters' lowest S_k(W_k):
 //!
-//! W̄_k ← ρ·W̄_k,  W_hold ← max(ρ·W_hold, min_voters S_k(W_k)).
+//! W̄_k ← ρ·W̄_k,  W_hold ← max(ρ·W_hold, min_voters S_k(W_k)),
+//! W_slow,stop ← ρ·W_slow,stop.
 //!
 //! It only raises. It needs a rope of the bank that follows the true swing
 //! (D_k ≤ 0.03): on the grid or near it, or a swing small enough; a short
@@ -1039,7 +1040,15 @@
 //! cases (true u 0.804–0.908) instead of 7; re-measured after the later
 //! changes, 3 of 64 (0.883–0.908, `inched_lowering_known_gap`). Raised to the
 //! held weighing instead of W_slow at the stop, 12 were. No
-//! inched lowering is cut late (`an_inched_lowering_is_cut_*`). A load
+//! inched lowering is cut late (`an_inched_lowering_is_cut_*`). The
+//! rescale of a load added at rest (below, "At rest after a move: a load
+//! added, seen at once") multiplies W_slow at the stop by its ρ as it does
+//! the averages and the held weighing: the next move starts from the new
+//! load. Until it did, a lowering begun 7 s after 60 % of rated became
+//! 100 % (3 s after a raise to 80° on the paid-out rope, seal friction)
+//! started from the averages, which had sunk at rest to 0.93 of the new
+//! load, and was cut at true u 1.063; now from 1.023
+//! (`a_lowering_2_to_10_s_after_a_load_added_at_rest_*`). A load
 //! added at rest and read from the force's ratio to one period earlier
 //! (the period mean's step) is taken up by the averages too, as the
 //! rescale's is: lowered 80° → 20° after 60 % of rated became 100 % 14 s
@@ -2152,6 +2161,10 @@ impl<T: Real> StaticLoadBank<T> {
                     // reading has the new load in it already).
                     let held = self.hold_kg.map_or(s, |w| (w * scale).max(s));
                     self.hold_kg = Some(held);
+                    // The next move starts from the new load (see the
+                    // module doc, "The averages carry the rest's weighing
+                    // into the next move").
+                    self.slow_at_stop = self.slow_at_stop.map(|w| w * scale);
                 }
                 self.follow_s = (self.follow_s - self.dt_s).max(T::lit(0.0));
             }
