@@ -1243,7 +1243,15 @@ fn a_lowering_after_a_load_added_at_rest_f32() {
 /// only at 1.245–1.249, and the thesis's rope and the 3 m one with constant
 /// friction released their cut at 1.05.
 fn lowering_5_s_after_a_load_added_at_rest_soon_after_a_stop(precision: Precision) {
-    let (failures, highest_uncut, lowest_onset) = lowering_after_a_load_added_at_rest(precision, 3.0, 5.0);
+    lowering_after_a_load_added_at_rest_keeps_the_bounds(&ROPES, precision, 5.0);
+}
+
+/// [`lowering_after_a_load_added_at_rest_on`] the `ropes`, 3 s after the
+/// stop and lowered `after` s after the take-up, asserted within the
+/// lowering's bounds; prints the highest true u not cut and the lowest at
+/// an OVERLOAD's onset.
+fn lowering_after_a_load_added_at_rest_keeps_the_bounds(ropes: &[Rope], precision: Precision, after: f64) {
+    let (failures, highest_uncut, lowest_onset) = lowering_after_a_load_added_at_rest_on(ropes, precision, 3.0, after);
     println!("{precision:?}: highest true u not cut {highest_uncut:.3}, lowest OVERLOAD onset {lowest_onset:.3}");
     assert!(failures.is_empty(), "{failures:#?}");
 }
@@ -1349,9 +1357,7 @@ fn lowering_8_or_10_s_after_a_load_added_at_rest(precision: Precision) {
 /// ropes rated at 45° were cut only at true u 1.076–1.105: the lowering
 /// started from the old load's weighing.
 fn lowering_4_s_after_a_load_added_at_rest(precision: Precision) {
-    let (failures, highest_uncut, lowest_onset) = lowering_after_a_load_added_at_rest(precision, 3.0, 4.0);
-    println!("{precision:?}: highest true u not cut {highest_uncut:.3}, lowest OVERLOAD onset {lowest_onset:.3}");
-    assert!(failures.is_empty(), "{failures:#?}");
+    lowering_after_a_load_added_at_rest_keeps_the_bounds(&ROPES, precision, 4.0);
 }
 
 #[test]
@@ -1374,9 +1380,7 @@ fn a_lowering_4_s_after_a_load_added_at_rest_f32() {
 /// the rest's weighing into the next move"): the lowering started from the
 /// averages, which had sunk at rest to 0.93 of the new load.
 fn lowering_7_s_after_a_load_added_at_rest_on_the_paid_out_rope(precision: Precision) {
-    let (failures, highest_uncut, lowest_onset) = lowering_after_a_load_added_at_rest_on(&[Rope::Thesis], precision, 3.0, 7.0);
-    println!("{precision:?}: highest true u not cut {highest_uncut:.3}, lowest OVERLOAD onset {lowest_onset:.3}");
-    assert!(failures.is_empty(), "{failures:#?}");
+    lowering_after_a_load_added_at_rest_keeps_the_bounds(&[Rope::Thesis], precision, 7.0);
 }
 
 #[test]

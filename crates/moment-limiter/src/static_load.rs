@@ -927,7 +927,8 @@
 //! [`MIDRANGE_CARRY_S`], longer than half the longest rope's period: W₁ is
 //! the load the force reads at factor 1 at the moving boom's angle, put back
 //! into the rest's force by the rest's F_0 + F_W(W) (the pull's units must
-//! not change with the angle, which doubles the arm from 80° to 72°), and
+//! not change with the angle: the load's arm grows by three quarters from
+//! 80° to 72°), and
 //! the midrange of the rest's crest and the trough in the move is a floor
 //! under the reading and the averages as at rest. A lowering's start only
 //! deepens the trough (the load sinks with the tip), so the floor errs low;
