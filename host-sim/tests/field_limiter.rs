@@ -1332,7 +1332,7 @@ fn a_lowering_2_to_10_s_after_a_load_added_at_rest_stays_as_measured() {
 /// lowering begun 8 s and 10 s after the take-up, once the swing's midrange
 /// or the mean over one swing period has weighed the load added: cut
 /// between true u 1/1.1 and 1.05 and never released over it (measured, f64:
-/// from 0.933 and 0.964). Before the rest's peak of W_fast was forgotten
+/// from 0.933 and 0.963). Before the rest's peak of W_fast was forgotten
 /// while those weighed (`moment_limiter::static_load`, "A load added at
 /// rest that nothing weighed"), the move started doubting that weighing:
 /// 8 s after was cut at 0.904, and with the averages taking up W_fast in

@@ -126,7 +126,7 @@
 //!   peak above that weighing is the swing's crest, not a load nothing
 //!   weighed. Doubting it, a lowering begun 10 s after the take-up on a 3 m
 //!   rope held W_fast's crest at 68° (1.17 × the load) and was cut at true u
-//!   0.873; now from 0.964 (and 8 s after from 0.933, where it was 0.904;
+//!   0.873; now from 0.963 (and 8 s after from 0.933, where it was 0.904;
 //!   `a_lowering_8_or_10_s_after_a_load_added_at_rest_*`).
 //!   At rest a hypothesis that cannot weigh keeps its average and votes with
 //!   it (the load swings on; its weighing from the move is the best it has).
