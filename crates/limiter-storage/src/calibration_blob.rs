@@ -156,21 +156,21 @@ impl core::fmt::Display for CalibrationBlobError {
             CalibrationBlobError::Length(n) => {
                 write!(
                     f,
-                    "{} ({n} bytes, not {BLOB_LEN}, {BLOB_LEN_3}, {BLOB_LEN_2} nor {BLOB_LEN_1})",
+                    "{} ({n} bytes, not {BLOB_LEN}, {BLOB_LEN_4}, {BLOB_LEN_3}, {BLOB_LEN_2} nor {BLOB_LEN_1})",
                     self.as_str()
                 )
             }
             CalibrationBlobError::Format(v) => {
                 write!(
                     f,
-                    "{} {v} (this firmware reads {BLOB_FORMAT_1}, {BLOB_FORMAT_2}, {BLOB_FORMAT_3} and {BLOB_FORMAT})",
+                    "{} {v} (this firmware reads {BLOB_FORMAT_1}, {BLOB_FORMAT_2}, {BLOB_FORMAT_3}, {BLOB_FORMAT_4} and {BLOB_FORMAT})",
                     self.as_str()
                 )
             }
             CalibrationBlobError::SchemaVersion(v) => {
                 write!(
                     f,
-                    "{} {v} (this firmware reads {CALIBRATION_VERSION_1}, {CALIBRATION_VERSION_2}, {CALIBRATION_VERSION_3} and {CALIBRATION_VERSION})",
+                    "{} {v} (this firmware reads {CALIBRATION_VERSION_1}, {CALIBRATION_VERSION_2}, {CALIBRATION_VERSION_3}, {CALIBRATION_VERSION_4} and {CALIBRATION_VERSION})",
                     self.as_str()
                 )
             }

@@ -412,3 +412,15 @@ fn the_board_loads_only_a_good_stored_blob() {
     let got = load_calibration::<f32, _>(&mut store);
     assert!(got.is_err(), "a rotten blob was applied: {got:?}");
 }
+
+/// A refusal names every length, format and schema version the decoder
+/// reads (the ones before format 5 left out format 4, which it reads).
+#[test]
+fn refusals_name_every_format_the_decoder_reads() {
+    let format = CalibrationBlobError::Format(9).to_string();
+    assert!(format.ends_with(" 9 (this firmware reads 1, 2, 3, 4 and 5)"), "{format}");
+    let schema = CalibrationBlobError::SchemaVersion(9).to_string();
+    assert!(schema.ends_with(" 9 (this firmware reads 1, 2, 3, 4 and 5)"), "{schema}");
+    let length = CalibrationBlobError::Length(7).to_string();
+    assert!(length.ends_with("(7 bytes, not 108, 100, 84, 76 nor 60)"), "{length}");
+}

@@ -94,6 +94,10 @@ pub const V2_KEYS: usize = 8;
 /// Number of keys of schema version 5.
 pub const KEY_COUNT: usize = 12;
 
+/// Every schema version the reader reads, oldest first.
+pub const CALIBRATION_VERSIONS: [u32; 5] =
+    [CALIBRATION_VERSION_1, CALIBRATION_VERSION_2, CALIBRATION_VERSION_3, CALIBRATION_VERSION_4, CALIBRATION_VERSION];
+
 /// The first schema version: constant friction per direction (the first
 /// [`V1_KEYS`] keys of [`CALIBRATION_KEYS`]).
 pub const CALIBRATION_VERSION_1: u32 = 1;
@@ -506,10 +510,7 @@ impl Findings {
                 }
             };
             self.version = Some(v);
-            if [CALIBRATION_VERSION, CALIBRATION_VERSION_4, CALIBRATION_VERSION_3, CALIBRATION_VERSION_2, CALIBRATION_VERSION_1]
-                .iter()
-                .any(|k| v == f64::from(*k))
-            {
+            if CALIBRATION_VERSIONS.iter().any(|k| v == f64::from(*k)) {
                 return Ok(());
             }
             if !v.is_nan() {
@@ -564,7 +565,7 @@ impl Findings {
             return Err(e);
         }
         // A known version (else `version_error` above).
-        let (version, keys) = [CALIBRATION_VERSION_1, CALIBRATION_VERSION_2, CALIBRATION_VERSION_3, CALIBRATION_VERSION_4, CALIBRATION_VERSION]
+        let (version, keys) = CALIBRATION_VERSIONS
             .iter()
             .find(|k| version == f64::from(**k))
             .and_then(|k| Some((*k, keys_of_version(*k)?)))
