@@ -89,6 +89,12 @@ impl Real for f32 {
 /// 1 ulp there) and the quadrant's sign swap. Absolute error ≤ 2.4e-7 for
 /// |x| ≤ 100 (test `sin_cos_f32_matches_f64`); the boom's angle stays within
 /// ±2 rad. Non-finite x gives NaN.
+// Never inlined: link-time optimisation had inlined its 248 bytes at every
+// call of the limiter's pendulum code, 2.3 KB of the board's 64 KiB flash
+// budget; one copy costs the cycle ~24 instructions more (call, return and
+// moves; max 8 982 -> 9 005, scripts/firmware-budgets.sh). Same arithmetic,
+// same results.
+#[inline(never)]
 pub fn sin_cos_f32(x: f32) -> (f32, f32) {
     const FRAC_2_PI: f32 = core::f32::consts::FRAC_2_PI;
     // π/2 with its f32 mantissa cut to 12 bits (0x3fc90000), and the rest.
