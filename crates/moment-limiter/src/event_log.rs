@@ -59,6 +59,9 @@ impl<T: Copy, const N: usize> EventLog<T, N> {
     }
 
     /// Records an event, dropping the oldest if the log is full.
+    // Never inlined (runs on a state change only): its inlined copies took
+    // 0.26 KB more of the board's 64 KiB flash than one function.
+    #[inline(never)]
     pub fn push(&mut self, event: Event<T>) {
         if self.events.is_full() {
             let _ = self.events.pop_front();
