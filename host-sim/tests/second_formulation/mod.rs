@@ -49,6 +49,43 @@ pub enum Hanging {
     PaidOut { clearance_m: f64 },
     /// Held at this length (m).
     Held { length_m: f64 },
+    /// Luffed and hoisted at once: `length_m` at the start, and while the
+    /// boom moves (from the first sample whose angle differs from the
+    /// first one to the last that differs from the last one) the winch
+    /// takes the hook up by `by_m` (negative: lets it down) at a trapezoidal
+    /// speed, ramps of [`winch_ramp_s`] at each end; held before and after.
+    Winched { length_m: f64, by_m: f64 },
+}
+
+/// The winch's ramp for a move of `move_s` (s): 1 s, at most a quarter of
+/// the move.
+pub fn winch_ramp_s(move_s: f64) -> f64 {
+    (move_s / 4.0).min(1.0)
+}
+
+/// The share of a trapezoidal-speed travel done at `t` over `[t0, t1]`
+/// with ramps of `r` (s): its position s ∈ [0, 1], speed ṡ and
+/// acceleration s̈.
+fn trapezoid(t: f64, t0: f64, t1: f64, r: f64) -> (f64, f64, f64) {
+    let total = t1 - t0;
+    if total <= 0.0 || t <= t0 {
+        return (0.0, 0.0, 0.0);
+    }
+    if t >= t1 {
+        return (1.0, 0.0, 0.0);
+    }
+    // Peak speed v with v·(total − r) = 1 (each ramp covers v·r/2).
+    let v = 1.0 / (total - r);
+    let a = v / r;
+    let tau = t - t0;
+    if tau < r {
+        (0.5 * a * tau * tau, a * tau, a)
+    } else if tau <= total - r {
+        (0.5 * v * r + v * (tau - r), v, 0.0)
+    } else {
+        let left = t1 - t;
+        (1.0 - 0.5 * a * left * left, a * left, -a)
+    }
 }
 
 /// The rigid crane: the reference's geometry and weights, and the boom's
@@ -184,8 +221,13 @@ impl RigidCrane {
             thd[i] = (th[i + 1] - th[i - 1]) / (h0 + h1);
             thdd[i] = 2.0 * ((th[i + 1] - th[i]) / h1 - (th[i] - th[i - 1]) / h0) / (h0 + h1);
         }
-        // The tip's and the rope's kinematics at (θ, θ̇, θ̈).
-        let kin = |th: f64, thd: f64, thdd: f64| {
+        // The winch's travel, over the samples where the boom moves.
+        let moved = |i: &usize| (th[*i] - th[0]).abs() > 1e-9;
+        let first_moving = (0..n).find(|i| moved(i)).map_or(0.0, |i| t[i.saturating_sub(1)]);
+        let last_moving = (0..n).rev().find(|&i| (th[i] - th[n - 1]).abs() > 1e-9).map_or(0.0, |i| t[(i + 1).min(n - 1)]);
+        let ramp = winch_ramp_s(last_moving - first_moving);
+        // The tip's and the rope's kinematics at (t, θ, θ̇, θ̈).
+        let kin = |time: f64, th: f64, thd: f64, thdd: f64| {
             let (s, c) = th.sin_cos();
             let tip = self.tip(th);
             let tip_v = [-len * s * thd, len * c * thd];
@@ -193,6 +235,10 @@ impl RigidCrane {
             let (l, ld, ldd) = match hanging {
                 Hanging::Held { length_m } => (length_m, 0.0, 0.0),
                 Hanging::PaidOut { clearance_m } => (tip[1] - clearance_m, tip_v[1], tip_a[1]),
+                Hanging::Winched { length_m, by_m } => {
+                    let (sh, shd, shdd) = trapezoid(time, first_moving, last_moving, ramp);
+                    (length_m - by_m * sh, -by_m * shd, -by_m * shdd)
+                }
             };
             (tip_a, l, ld, ldd)
         };
@@ -205,7 +251,7 @@ impl RigidCrane {
             if i > 0 {
                 // RK4 over the step, the kinematics linear between samples.
                 let dt = t[i] - t[i - 1];
-                let at = |f: f64| kin(th[i - 1] + f * (th[i] - th[i - 1]), thd[i - 1] + f * (thd[i] - thd[i - 1]), thdd[i - 1] + f * (thdd[i] - thdd[i - 1]));
+                let at = |f: f64| kin(t[i - 1] + f * dt, th[i - 1] + f * (th[i] - th[i - 1]), thd[i - 1] + f * (thd[i] - thd[i - 1]), thdd[i - 1] + f * (thdd[i] - thdd[i - 1]));
                 let h = dt / SUB as f64;
                 for k in 0..SUB {
                     let f0 = k as f64 / SUB as f64;
@@ -219,7 +265,7 @@ impl RigidCrane {
                     phid += h / 6.0 * (k1.1 + 2.0 * k2.1 + 2.0 * k3.1 + k4.1);
                 }
             }
-            let k = kin(th[i], thd[i], thdd[i]);
+            let k = kin(t[i], th[i], thd[i], thdd[i]);
             let (tip_a, l, ld, ldd) = k;
             let pdd = phi_dd(phi, phid, k);
             let (e, ep) = ([phi.sin(), -phi.cos()], [phi.cos(), phi.sin()]);
