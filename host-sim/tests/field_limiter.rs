@@ -4860,3 +4860,115 @@ fn luffing_while_hoisting_keeps_the_bounds_f32() {
         luffing_while_hoisting(Precision::F32, by_m, true);
     }
 }
+
+/// What [`load_added_in_motion`] measured.
+#[derive(Debug, Default)]
+struct InMotion {
+    /// The slowest first cut (OVERLOAD or FAULT) of 110 % after its take-up
+    /// ends (s), and how many of them came more than 1 s after.
+    slowest_110_s: f64,
+    late_110: usize,
+    /// The cases where 90 % added in a raise was an OVERLOAD.
+    cut_90: Vec<String>,
+    /// Of the lowerings with 90 % added: the highest true u of a sample
+    /// neither OVERLOAD nor FAULT at a true u ≥ 1.05 (0: none), and the
+    /// lowest true u at an OVERLOAD's onset.
+    highest_uncut_u: f64,
+    lowest_onset_u: f64,
+}
+
+/// A load added in motion (a second load hooked on, or a hook caught,
+/// while the boom luffs): in the second formulation's world, whose hook
+/// load may change at any instant (the load keeps its swing), 50 % of the
+/// load rated at the lower angle is taken to 90 % or 110 % of the load
+/// rated where its take-up ends, over 0.5 s or 2 s from the middle of a
+/// cycloidal luff (40° ↔ 80° in 10 s and 30 s, 20° → 60° and 60° → 20° in
+/// 30 s), every rope, both friction laws. Measured: the first cut of 110 %
+/// after its take-up; 90 % in a raise (the true u falls after it) never an
+/// OVERLOAD; in a lowering the true u climbs on past 1, and the lowering's
+/// bounds apply.
+fn load_added_in_motion(precision: Precision) -> InMotion {
+    let mut got = InMotion { lowest_onset_u: f64::INFINITY, ..InMotion::default() };
+    for (from, to, dur) in [(40.0f64, 80.0f64, 10.0), (40.0, 80.0, 30.0), (80.0, 40.0, 10.0), (80.0, 40.0, 30.0), (20.0, 60.0, 30.0), (60.0, 20.0, 30.0)] {
+        for rope in ROPES {
+            for seals in SEALS {
+                for take_up in [0.5, 2.0] {
+                    for frac in [0.9, 1.1] {
+                        let w0 = 0.5 * rated_kg(from.min(to).to_radians());
+                        let sc = Scenario { load_kg: w0, from_deg: from, to_deg: to, duration_s: dur, ramp_s: 1.0, shape: RampShape::Cycloidal, rope, seals, lift_off_s: None, seed: 5 };
+                        let (options, dt) = options_for_rate(rate_hz());
+                        let mut samples = simulate_program(crane(), &sc.program(), &options).expect("simulation");
+                        let on = HOLD_BEFORE_S + dur / 2.0;
+                        let done = on + take_up;
+                        let angle = samples.iter().find(|s| s.t_s >= done).map_or(to.to_radians(), |s| s.boom_angle_rad);
+                        let w1 = frac * rated_kg(angle);
+                        for s in samples.iter_mut() {
+                            s.hook_load_kg = w0 + (w1 - w0) * ((s.t_s - on) / take_up).clamp(0.0, 1.0);
+                        }
+                        second_formulation_of(&mut samples, sc.program().rope);
+                        lag_the_pressures(&mut samples);
+                        let rows = synthesize(&samples, dt, 0.0, 0.0, &sensors(seals, 5));
+                        let pts = with_setting(&SECOND_FORMULATION, true, || replay_rows(&rows, seals, precision));
+                        let name = format!("{from:.0}->{to:.0} {dur:.0}s {rope:?} {seals:?}: {:.0} % taken up in {take_up} s", frac * 100.0);
+                        let first_cut = pts.iter().find(|q| q.t >= on && cut(q)).map(|q| q.t - done);
+                        let lowering = to < from;
+                        println!(
+                            "{name:<58} first cut {}, lowest OVERLOAD onset {}",
+                            first_cut.map_or("none".into(), |c| format!("{c:+.2} s after the take-up")),
+                            lowest_onset_u(&pts).map_or("none".into(), |u| format!("at true u {u:.3}"))
+                        );
+                        if frac > 1.0 {
+                            let c = first_cut.unwrap_or(f64::INFINITY);
+                            got.slowest_110_s = got.slowest_110_s.max(c);
+                            got.late_110 += usize::from(c > 1.0);
+                        } else if lowering {
+                            got.highest_uncut_u = uncut(&pts).map(|q| q.u).fold(got.highest_uncut_u, f64::max);
+                            got.lowest_onset_u = lowest_onset_u(&pts).map_or(got.lowest_onset_u, |u| got.lowest_onset_u.min(u));
+                        } else if let Some((t, u)) = first_overload(&pts) {
+                            got.cut_90.push(format!("{name}: OVERLOAD at {t:.2} s, true u {u:.3}"));
+                        }
+                    }
+                }
+            }
+        }
+    }
+    println!("{precision:?}: {got:?}");
+    got
+}
+
+/// KNOWN GAP, measured (f64; f32 alike, below): a load added in motion is
+/// read through the lowest rope's reading alone, W_fast
+/// (`moment_limiter::static_load`: in motion the averages stand, or move
+/// at their pace, and "a heavier one is W_fast's"), and at a steep boom in
+/// a fast move the ropes' swings spread their readings by ±17 % or more:
+/// the lowest reads 0.69 of a load taken up during a 10 s raise at 60°. So
+/// 110 % is cut within 1 s of its take-up in 43 of 96 cases, and in the
+/// 10 s raises 40° → 80° only once the move stops (2.3–5.8 s after); 90 %
+/// added in a lowering, whose true u then climbs on, is cut past the
+/// lowering's 1.05 in 24 of 32 (up to true u 1.27: the 10 s lowering
+/// 80° → 40° on the half-way rope, taken up in 2 s). 90 % added in a raise is never an
+/// OVERLOAD, and no lowering is cut before true u 0.967. Tried and not
+/// kept: the rescale of a load added at rest (`moment_limiter::load_jump`)
+/// run in motion with every rope that weighs voting; it raised a light
+/// load's reading to 1.395 × itself in a 9 s lowering from 82° on a 3.3 m
+/// rope (campaign seed 1 #8831) and still left the 10 s raises' cuts where
+/// they were (each cycle rescales by the lowest rope's ratio, and the
+/// lowest rope reads the phantom of its swing).
+#[test]
+#[ignore = "KNOWN GAP: a load added in motion is cut up to 5.8 s after its take-up (110 %, a 10 s raise), and 90 % added in a lowering is cut past true u 1.05 (up to 1.27)"]
+fn a_load_added_in_motion_known_gap() {
+    let got = load_added_in_motion(Precision::F64);
+    assert!(got.slowest_110_s <= 1.0 && got.highest_uncut_u == 0.0 && got.cut_90.is_empty() && got.lowest_onset_u >= 1.0 / 1.1, "{got:?}");
+}
+
+/// The known gap above pinned at its measured size, f64 and f32, so that
+/// it cannot widen unseen: 110 % cut within 6 s of its take-up (5.80 s
+/// measured), no sample of a lowering over true u 1.28 uncut (1.268), none
+/// cut before 1/1.1 (0.967), 90 % added in a raise never an OVERLOAD.
+#[test]
+fn a_load_added_in_motion_stays_as_measured() {
+    for precision in [Precision::F64, Precision::F32] {
+        let got = load_added_in_motion(precision);
+        assert!(got.slowest_110_s <= 6.0 && got.highest_uncut_u <= 1.28 && got.cut_90.is_empty() && got.lowest_onset_u >= 1.0 / 1.1, "{precision:?}: {got:?}");
+    }
+}
