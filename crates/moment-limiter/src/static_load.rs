@@ -159,7 +159,14 @@
 //! from 85° they rose to 1.5 × the load). So in motion, while a possible
 //! rope cannot weigh, every average and W_slow itself stand (the load does
 //! not change in the air; a heavier one is W_fast's), and they move again
-//! when every possible rope weighs. At rest, while a possible rope has no
+//! when every possible rope weighs. That leaves a load added in motion to
+//! W_fast, the lowest rope's reading, which at a steep boom in a fast move
+//! reads the ropes' spread swings low (0.69 of a load taken up mid-raise
+//! at 60° in 10 s): such a load is cut late, in a 10 s raise only once the
+//! move stops (`host-sim` test `a_load_added_in_motion_known_gap`). The
+//! rescale of a load added at rest ([`crate::load_jump`]) run in motion
+//! with every rope voting was tried and not kept: it read a light load at
+//! 1.395 × itself (campaign seed 1 #8831). At rest, while a possible rope has no
 //! average (it could not weigh as the move ended), W_slow does not rise
 //! above the bank's weighing either. The ropes never agree while the boom
 //! creeps (its rate over [`SETTLED_RAD_S`]): its force may still carry the
