@@ -166,9 +166,12 @@
 //! move stops (`host-sim` test `a_load_added_in_motion_known_gap`). The
 //! rescale of a load added at rest ([`crate::load_jump`]) run in motion
 //! with every rope voting was tried and not kept: it read a light load at
-//! 1.395 × itself (campaign seed 1 #8831). At rest, while a possible rope has no
-//! average (it could not weigh as the move ended), W_slow does not rise
-//! above the bank's weighing either. The ropes never agree while the boom
+//! 1.395 × itself (campaign seed 1 #8831); with the consistent ropes voting
+//! it cut 110 % within 1.31 s but rescaled where the force leads the model
+//! in a lowering (after a logger's dropout, between an inched lowering's
+//! steps) and cut early, from true u 0.833 (the known gap's test doc).
+//! At rest, while a possible rope has no average (it could not weigh as
+//! the move ended), W_slow does not rise above the bank's weighing either. The ropes never agree while the boom
 //! creeps (its rate over [`SETTLED_RAD_S`]): its force may still carry the
 //! seals' sliding friction.
 //!
