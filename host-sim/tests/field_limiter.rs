@@ -4383,12 +4383,7 @@ fn the_second_formulation_agrees_with_the_reference_and_the_model() {
         }
     }
     for (from, to, length) in [(40.0, 80.0, 3.0), (80.0, 40.0, 8.0), (20.0, 60.0, 5.0)] {
-        let mut m = Maneuver::luff(4000.0, from, to, 10.0, 1.0, RampShape::Linear).unwrap();
-        m.settle_s = 20.0;
-        m.rope = RopeChoice::Held { length_m: Some(length) };
-        let (options, _) = options_for_rate(RATE_HZ);
-        let mut samples = simulate(model(), &m, &options).expect("simulation");
-        let stop = samples.iter().rposition(|s| (s.boom_angle_rad - to.to_radians()).abs() > 1e-9).expect("a move");
+        let (mut samples, stop) = held_luff_and_rest(from, to, length);
         let peak = |s: &[crane_model::sim::simulation::Sample<f64>]| s.iter().map(|x| x.swing_rad.abs()).fold(0.0, f64::max);
         let simulated = peak(&samples[stop + 1..]);
         rigid.replace_forces(&mut samples, Hanging::Held { length_m: length });
@@ -4718,6 +4713,19 @@ fn hard_hoist_starts_and_stops_stay_as_measured() {
 }
 
 
+/// The simulator's samples of 4 t luffed `from` → `to` degrees in 10 s
+/// (linear ramps of 1 s) on a rope held at `length_m`, and 20 s at rest;
+/// with the index of the move's last sample.
+fn held_luff_and_rest(from: f64, to: f64, length_m: f64) -> (Vec<crane_model::sim::simulation::Sample<f64>>, usize) {
+    let mut m = Maneuver::luff(4000.0, from, to, 10.0, 1.0, RampShape::Linear).unwrap();
+    m.settle_s = 20.0;
+    m.rope = RopeChoice::Held { length_m: Some(length_m) };
+    let (options, _) = options_for_rate(RATE_HZ);
+    let samples = simulate(model(), &m, &options).expect("simulation");
+    let stop = samples.iter().rposition(|s| (s.boom_angle_rad - to.to_radians()).abs() > 1e-9).expect("a move");
+    (samples, stop)
+}
+
 /// The winched rope of the second formulation ([`Hanging::Winched`]) is the
 /// pendulum it should be: after the move the winch has stopped at the
 /// length it was sent to (the swing's energy ½·l²·φ̇² + g·l·(1 − cos φ) per
@@ -4731,12 +4739,7 @@ fn the_winched_rope_ends_at_its_new_length() {
     let rigid = rigid_crane();
     let g = 9.81;
     for (from, to, length, by) in [(40.0, 80.0, 6.0, 4.0), (80.0, 40.0, 3.0, -3.0), (20.0, 60.0, 8.0, 2.5)] {
-        let mut m = Maneuver::luff(4000.0, from, to, 10.0, 1.0, RampShape::Linear).unwrap();
-        m.settle_s = 20.0;
-        m.rope = RopeChoice::Held { length_m: Some(length) };
-        let (options, _) = options_for_rate(RATE_HZ);
-        let mut samples = simulate(model(), &m, &options).expect("simulation");
-        let stop = samples.iter().rposition(|s| (s.boom_angle_rad - to.to_radians()).abs() > 1e-9).expect("a move");
+        let (mut samples, stop) = held_luff_and_rest(from, to, length);
         rigid.replace_forces(&mut samples, Hanging::Winched { length_m: length, by_m: by });
         let end = length - by;
         let energy = |l: f64| -> (f64, f64) {
