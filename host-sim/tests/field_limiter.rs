@@ -4388,15 +4388,7 @@ fn the_second_formulation_agrees_with_the_reference_and_the_model() {
         let simulated = peak(&samples[stop + 1..]);
         rigid.replace_forces(&mut samples, Hanging::Held { length_m: length });
         let rigid_swing = peak(&samples[stop + 1..]);
-        let energy = |x: &crane_model::sim::simulation::Sample<f64>, v: f64| 0.5 * length * length * v * v + g * length * (1.0 - x.swing_rad.cos());
-        // From the third sample after the stop (the last one's angular
-        // acceleration reaches into the step after it), the swing's rate by
-        // the five-point stencil (error (ωh)⁴/30 ≈ 4e-9 at 3 m).
-        let es: Vec<f64> = samples[stop + 3..]
-            .windows(5)
-            .map(|w| energy(&w[2], (w[0].swing_rad - 8.0 * w[1].swing_rad + 8.0 * w[3].swing_rad - w[4].swing_rad) / (3.0 * (w[4].t_s - w[0].t_s))))
-            .collect();
-        let (lo, hi) = es.iter().fold((f64::INFINITY, 0.0f64), |(l, h), &e| (l.min(e), h.max(e)));
+        let (lo, hi) = swing_energy_range(&samples[stop..], length);
         println!("{from}° -> {to}° on {length} m: swing after the stop {:.3}° (simulator {:.3}°), energy {lo:.7}…{hi:.7} J/kg", rigid_swing.to_degrees(), simulated.to_degrees());
         assert!((rigid_swing / simulated - 1.0).abs() < 0.1, "swing {rigid_swing} against the simulator's {simulated}");
         assert!(hi - lo < 1e-6 * hi, "energy {lo}…{hi}");
@@ -4726,6 +4718,24 @@ fn held_luff_and_rest(from: f64, to: f64, length_m: f64) -> (Vec<crane_model::si
     (samples, stop)
 }
 
+/// The lowest and highest energy per kg, ½·l²·φ̇² + g·l·(1 − cos φ), of a
+/// pendulum of `length_m` swinging as `after_stop` shows (its first sample
+/// the move's last). From the third sample on (the last moving one's
+/// angular acceleration reaches into the step after it), the swing's rate
+/// by the five-point stencil (error (ωh)⁴/30 ≈ 4e-9 at 3 m).
+fn swing_energy_range(after_stop: &[crane_model::sim::simulation::Sample<f64>], length_m: f64) -> (f64, f64) {
+    let g = 9.81;
+    after_stop
+        .get(3..)
+        .unwrap_or_default()
+        .windows(5)
+        .map(|w| {
+            let v = (w[0].swing_rad - 8.0 * w[1].swing_rad + 8.0 * w[3].swing_rad - w[4].swing_rad) / (3.0 * (w[4].t_s - w[0].t_s));
+            0.5 * length_m * length_m * v * v + g * length_m * (1.0 - w[2].swing_rad.cos())
+        })
+        .fold((f64::INFINITY, 0.0f64), |(lo, hi), e| (lo.min(e), hi.max(e)))
+}
+
 /// The winched rope of the second formulation ([`Hanging::Winched`]) is the
 /// pendulum it should be: after the move the winch has stopped at the
 /// length it was sent to (the swing's energy ½·l²·φ̇² + g·l·(1 − cos φ) per
@@ -4742,18 +4752,7 @@ fn the_winched_rope_ends_at_its_new_length() {
         let (mut samples, stop) = held_luff_and_rest(from, to, length);
         rigid.replace_forces(&mut samples, Hanging::Winched { length_m: length, by_m: by });
         let end = length - by;
-        let energy = |l: f64| -> (f64, f64) {
-            let es: Vec<f64> = samples[stop + 3..]
-                .windows(5)
-                .map(|w| {
-                    let v = (w[0].swing_rad - 8.0 * w[1].swing_rad + 8.0 * w[3].swing_rad - w[4].swing_rad) / (3.0 * (w[4].t_s - w[0].t_s));
-                    0.5 * l * l * v * v + g * l * (1.0 - w[2].swing_rad.cos())
-                })
-                .collect();
-            let (lo, hi) = es.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), &e| (lo.min(e), hi.max(e)));
-            (lo, hi)
-        };
-        let ((lo, hi), (lo0, hi0)) = (energy(end), energy(length));
+        let ((lo, hi), (lo0, hi0)) = (swing_energy_range(&samples[stop..], end), swing_energy_range(&samples[stop..], length));
         // Upward zero crossings of the swing after the stop: whole periods.
         let ups: Vec<f64> = samples[stop + 1..].windows(2).filter(|w| w[0].swing_rad < 0.0 && w[1].swing_rad >= 0.0).map(|w| w[0].t_s - w[0].swing_rad * (w[1].t_s - w[0].t_s) / (w[1].swing_rad - w[0].swing_rad)).collect();
         let period = (ups[ups.len() - 1] - ups[0]) / (ups.len() - 1) as f64;

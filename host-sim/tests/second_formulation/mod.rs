@@ -39,6 +39,7 @@
 #[path = "../../../crates/crane-model/tests/common/mod.rs"]
 mod reference;
 
+use crane_model::data::profile::{RampShape, StrokeProfile};
 use crane_model::sim::simulation::Sample;
 use reference::dynamics::QuasiStatic;
 
@@ -59,33 +60,8 @@ pub enum Hanging {
 
 /// The winch's ramp for a move of `move_s` (s): 1 s, at most a quarter of
 /// the move.
-pub fn winch_ramp_s(move_s: f64) -> f64 {
+fn winch_ramp_s(move_s: f64) -> f64 {
     (move_s / 4.0).min(1.0)
-}
-
-/// The share of a trapezoidal-speed travel done at `t` over `[t0, t1]`
-/// with ramps of `r` (s): its position s ∈ [0, 1], speed ṡ and
-/// acceleration s̈.
-fn trapezoid(t: f64, t0: f64, t1: f64, r: f64) -> (f64, f64, f64) {
-    let total = t1 - t0;
-    if total <= 0.0 || t <= t0 {
-        return (0.0, 0.0, 0.0);
-    }
-    if t >= t1 {
-        return (1.0, 0.0, 0.0);
-    }
-    // Peak speed v with v·(total − r) = 1 (each ramp covers v·r/2).
-    let v = 1.0 / (total - r);
-    let a = v / r;
-    let tau = t - t0;
-    if tau < r {
-        (0.5 * a * tau * tau, a * tau, a)
-    } else if tau <= total - r {
-        (0.5 * v * r + v * (tau - r), v, 0.0)
-    } else {
-        let left = t1 - t;
-        (1.0 - 0.5 * a * left * left, a * left, -a)
-    }
 }
 
 /// The rigid crane: the reference's geometry and weights, and the boom's
@@ -221,11 +197,13 @@ impl RigidCrane {
             thd[i] = (th[i + 1] - th[i - 1]) / (h0 + h1);
             thdd[i] = 2.0 * ((th[i + 1] - th[i]) / h1 - (th[i] - th[i - 1]) / h0) / (h0 + h1);
         }
-        // The winch's travel, over the samples where the boom moves.
-        let moved = |i: &usize| (th[*i] - th[0]).abs() > 1e-9;
-        let first_moving = (0..n).find(|i| moved(i)).map_or(0.0, |i| t[i.saturating_sub(1)]);
+        // The winch's travel over the samples where the boom moves, as a
+        // stroke of 0 → 1 with linear ramps; none without a move.
+        let first_moving = (0..n).find(|&i| (th[i] - th[0]).abs() > 1e-9).map_or(0.0, |i| t[i.saturating_sub(1)]);
         let last_moving = (0..n).rev().find(|&i| (th[i] - th[n - 1]).abs() > 1e-9).map_or(0.0, |i| t[(i + 1).min(n - 1)]);
-        let ramp = winch_ramp_s(last_moving - first_moving);
+        let move_s = last_moving - first_moving;
+        let ramp = winch_ramp_s(move_s);
+        let winch = (move_s > 0.0).then_some(StrokeProfile { shape: RampShape::Linear, t1_s: ramp, t2_s: move_s - ramp, t3_s: move_s, start_m: 0.0, end_m: 1.0 });
         // The tip's and the rope's kinematics at (t, θ, θ̇, θ̈).
         let kin = |time: f64, th: f64, thd: f64, thdd: f64| {
             let (s, c) = th.sin_cos();
@@ -235,10 +213,10 @@ impl RigidCrane {
             let (l, ld, ldd) = match hanging {
                 Hanging::Held { length_m } => (length_m, 0.0, 0.0),
                 Hanging::PaidOut { clearance_m } => (tip[1] - clearance_m, tip_v[1], tip_a[1]),
-                Hanging::Winched { length_m, by_m } => {
-                    let (sh, shd, shdd) = trapezoid(time, first_moving, last_moving, ramp);
-                    (length_m - by_m * sh, -by_m * shd, -by_m * shdd)
-                }
+                Hanging::Winched { length_m, by_m } => match winch.map(|w| w.at(time - first_moving)) {
+                    Some(m) => (length_m - by_m * m.extension_m, -by_m * m.rate_m_s, -by_m * m.accel_m_s2),
+                    None => (length_m, 0.0, 0.0),
+                },
             };
             (tip_a, l, ld, ldd)
         };
