@@ -4899,7 +4899,8 @@ fn load_added_in_motion(precision: Precision) -> InMotion {
                         let w0 = 0.5 * rated_kg(from.min(to).to_radians());
                         let sc = Scenario { load_kg: w0, from_deg: from, to_deg: to, duration_s: dur, ramp_s: 1.0, shape: RampShape::Cycloidal, rope, seals, lift_off_s: None, seed: 5 };
                         let (options, dt) = options_for_rate(rate_hz());
-                        let mut samples = simulate_program(crane(), &sc.program(), &options).expect("simulation");
+                        let program = sc.program();
+                        let mut samples = simulate_program(crane(), &program, &options).expect("simulation");
                         let on = HOLD_BEFORE_S + dur / 2.0;
                         let done = on + take_up;
                         let angle = samples.iter().find(|s| s.t_s >= done).map_or(to.to_radians(), |s| s.boom_angle_rad);
@@ -4907,7 +4908,7 @@ fn load_added_in_motion(precision: Precision) -> InMotion {
                         for s in samples.iter_mut() {
                             s.hook_load_kg = w0 + (w1 - w0) * ((s.t_s - on) / take_up).clamp(0.0, 1.0);
                         }
-                        second_formulation_of(&mut samples, sc.program().rope);
+                        second_formulation_of(&mut samples, program.rope);
                         lag_the_pressures(&mut samples);
                         let rows = synthesize(&samples, dt, 0.0, 0.0, &sensors(seals, 5));
                         let pts = with_setting(&SECOND_FORMULATION, true, || replay_rows(&rows, seals, precision));

@@ -171,9 +171,10 @@
 //! in a lowering (after a logger's dropout, between an inched lowering's
 //! steps) and cut early, from true u 0.833 (the known gap's test doc).
 //! At rest, while a possible rope has no average (it could not weigh as
-//! the move ended), W_slow does not rise above the bank's weighing either. The ropes never agree while the boom
-//! creeps (its rate over [`SETTLED_RAD_S`]): its force may still carry the
-//! seals' sliding friction.
+//! the move ended), W_slow does not rise above the bank's weighing either.
+//! The ropes never agree while the boom creeps (its rate over
+//! [`SETTLED_RAD_S`]): its force may still carry the seals' sliding
+//! friction.
 //!
 //! ## The seals' breakaway: the averages without it
 //!
