@@ -21,7 +21,7 @@
 //! | valid values | [`units`] | [`units::PressureBar`], [`units::BoomAngle`]: cannot hold a faulted reading |
 //! | checks | [`checks`] | NAMUR NE 43, range, stuck, rate of change |
 //! | force | [`piston_force`], [`filter`] | eq. 4.1 and the oscillation filter |
-//! | load | [`load_estimate`], [`breakaway`], [`static_load`], [`held_pendulum`], [`swing`], [`load_jump`], [`period_mean`], [`swing_midrange`] | W from the model's piston force (quadratic in W), friction per direction, boom inertia; the static hook mass from a bank of rope hypotheses (paid out, or held at 3–22 m, each with its swing): the lowest load any rope explains, floored by their averages; a load added at rest after a move, from the consistent ropes' common ratio, the swing's crest and trough, or the mean over one swing period; read ×1.05 (SAE J376) |
+//! | load | [`load_estimate`], [`breakaway`], [`static_load`], [`held_pendulum`], [`swing`], [`load_jump`], [`load_rise`], [`period_mean`], [`swing_midrange`] | W from the model's piston force (quadratic in W), friction per direction, boom inertia; the static hook mass from a bank of rope hypotheses (paid out, or held at 3–22 m, each with its swing): the lowest load any rope explains, floored by their averages; a load added at rest after a move, from the consistent ropes' common ratio, the swing's crest and trough, or the mean over one swing period; a load added in motion, from the consistent ropes' common rise; read ×1.05 (SAE J376) |
 //! | capacity | [`capacity`] | tipping load from the affine jack reaction, safety factor, chart |
 //! | plausibility | [`negative_load`] | a load estimate no hook can give is a FAULT |
 //! | decision | [`state_machine`] | NORMAL / WARNING / OVERLOAD / FAULT, hysteresis, outputs |
@@ -59,6 +59,7 @@ pub mod held_pendulum;
 pub mod io;
 pub mod load_estimate;
 pub mod load_jump;
+pub mod load_rise;
 pub mod negative_load;
 pub mod period_mean;
 pub mod piston_force;

@@ -158,18 +158,25 @@
 //! averages fell to 0.76 of the load: an overload cut at true u 1.09;
 //! from 85° they rose to 1.5 × the load). So in motion, while a possible
 //! rope cannot weigh, every average and W_slow itself stand (the load does
-//! not change in the air; a heavier one is W_fast's), and they move again
-//! when every possible rope weighs. That leaves a load added in motion to
-//! W_fast, the lowest rope's reading, which at a steep boom in a fast move
-//! reads the ropes' spread swings low (0.69 of a load taken up mid-raise
-//! at 60° in 10 s): such a load is cut late, in a 10 s raise only once the
-//! move stops (`host-sim` test `a_load_added_in_motion_known_gap`). The
-//! rescale of a load added at rest ([`crate::load_jump`]) run in motion
-//! with every rope voting was tried and not kept: it read a light load at
-//! 1.395 × itself (campaign seed 1 #8831); with the consistent ropes voting
-//! it cut 110 % within 1.31 s but rescaled where the force leads the model
-//! in a lowering (after a logger's dropout, between an inched lowering's
-//! steps) and cut early, from true u 0.833 (the known gap's test doc).
+//! not change in the air), and they move again when every possible rope
+//! weighs. A heavier load in motion is W_fast's, the lowest rope's reading,
+//! which at a steep boom in a fast move reads the ropes' spread swings low
+//! (0.69 of a load taken up mid-raise at 60° in 10 s), and the follower of
+//! a load added in motion's ([`crate::load_rise`]): in a steady luff, a
+//! rise that every rope sees and the consistent ropes confirm for 0.4 s
+//! multiplies every average (and the weighing that stands) by the
+//! consistent ropes' lowest rise over what they read a second before it,
+//! never past what they read now. Before it, such a load was cut only
+//! once a 10 s raise stopped (5.8 s after its take-up) and a lowering with
+//! 90 % added was cut at true u 1.27 (`host-sim` test
+//! `a_load_added_in_motion_known_gap`, whose doc gives today's figures).
+//! The rescale of a load added at rest ([`crate::load_jump`]), a ratio to
+//! the averages, run in motion was tried and not kept: it read a light load
+//! at 1.395 × itself (campaign seed 1 #8831), and with the consistent ropes
+//! voting it rescaled where the averages held a kept or old weighing
+//! below the force (after a logger's dropout, between an inched lowering's
+//! steps) and cut early, from true u 0.833; a rise over the ropes' own
+//! readings does not see a weighing the averages missed.
 //! At rest, while a possible rope has no average (it could not weigh as
 //! the move ended), W_slow does not rise above the bank's weighing either.
 //! The ropes never agree while the boom creeps (its rate over
@@ -1123,6 +1130,7 @@ use crane_model::Real;
 
 use crate::held_pendulum::{BoomTip, HeldRopes, PaidOutRope};
 use crate::filter::stage_gain;
+use crate::load_rise::{Reading, RiseFollower};
 use crate::load_jump::{self, Consistency};
 use crate::period_mean::PeriodMean;
 use crate::swing_midrange::SwingMidrange;
@@ -1411,6 +1419,8 @@ pub struct StaticLoadBank<T> {
     kept_kg: Option<T>,
     /// Time left to follow a load added at rest (s; see [`crate::load_jump`]).
     follow_s: T,
+    /// A load added in motion, followed as it rises ([`crate::load_rise`]).
+    rise: RiseFollower<T, HYPOTHESES>,
     /// At rest after a move of at least [`MOVE_FOR_HOLD_S`]: where a load
     /// added is looked for ([`crate::load_jump`]).
     after_move: bool,
@@ -1569,6 +1579,7 @@ impl<T: Real> StaticLoadBank<T> {
             slow_kg: None,
             kept_kg: None,
             follow_s: T::lit(0.0),
+            rise: RiseFollower::new(),
             after_move: false,
             light_at_stop: false,
             light_s: T::lit(-FAST_LIFT_S),
@@ -1639,6 +1650,7 @@ impl<T: Real> StaticLoadBank<T> {
             h.slow_kg = None;
             h.jump = Consistency::new();
         }
+        self.rise.clear();
         self.fast_stage = None;
         self.still_stage = None;
         self.bounce_stages = (None, None);
@@ -1995,6 +2007,7 @@ impl<T: Real> StaticLoadBank<T> {
             T::lit(0.0)
         };
         let still = starting || rate_rad_s.abs() <= T::lit(MOVING_RAD_S);
+        self.rise.luff(!still, accel_rad_s2, self.dt_s);
         self.falling = rate_rad_s < T::lit(0.0);
         let settled = rate_rad_s.abs() <= T::lit(SETTLED_RAD_S);
         self.unsettled_s = if settled { T::lit(0.0) } else { self.unsettled_s + self.dt_s };
@@ -2206,6 +2219,30 @@ impl<T: Real> StaticLoadBank<T> {
         }
     }
 
+    /// A load added in motion ([`crate::load_rise`]): every slow average
+    /// multiplied by the follower's factor of this cycle (1 when none), which
+    /// it returns.
+    fn follow_rise(&mut self, factors: &[Option<T>; HYPOTHESES]) -> T {
+        let mut readings: [Option<Reading<T>>; HYPOTHESES] = [None; HYPOTHESES];
+        for ((slot, h), f) in readings.iter_mut().zip(self.hypotheses.iter()).zip(factors.iter()) {
+            *slot = match (f, h.jump.fast_kg()) {
+                (Some(_), Some(s)) => Some(Reading { fast_kg: s, average_kg: h.slow_kg.and_then(|st| st.last().copied()), inconsistency: h.jump.inconsistency() }),
+                _ => None,
+            };
+        }
+        let scale = self.rise.update(&readings, self.slow_kg, self.dt_s);
+        if scale > T::lit(1.0) {
+            for h in self.hypotheses.iter_mut() {
+                if let Some(st) = h.slow_kg.as_mut() {
+                    for x in st.iter_mut() {
+                        *x *= scale;
+                    }
+                }
+            }
+        }
+        scale
+    }
+
     /// The load of this cycle (after [`advance`](Self::advance)); `None` when
     /// the force gives no load on the model's rising branch (not observable).
     // Not inlined: the controller's cycle calls it once, and inlined into the
@@ -2288,7 +2325,7 @@ impl<T: Real> StaticLoadBank<T> {
             None => self.kept_kg,
         };
         let doubted = self.weighing_doubted;
-        for (h, factor) in self.hypotheses.iter_mut().zip(factors.iter()) {
+        for (k, (h, factor)) in self.hypotheses.iter_mut().zip(factors.iter()).enumerate() {
             let Some(f) = *factor else {
                 // Cannot weigh now. In motion its average starts afresh when
                 // it can (the rope moved on meanwhile); at rest it is kept.
@@ -2297,6 +2334,8 @@ impl<T: Real> StaticLoadBank<T> {
                     h.was_lowest |= matches!((last, prev_slow), (Some(a), Some(p)) if a <= p);
                     h.slow_kg = None;
                     h.jump = Consistency::new();
+                    // Its reading starts afresh too: no rise over it.
+                    self.rise.forget(k);
                 }
                 continue;
             };
@@ -2365,6 +2404,10 @@ impl<T: Real> StaticLoadBank<T> {
         if still && self.after_move {
             self.rest_peak_kg = Some(self.rest_peak_kg.map_or(fast, |p| p.max(fast)));
         }
+        // A load added in motion: the averages rise with it, and so does the
+        // weighing that stands while a possible rope cannot weigh.
+        let rise = self.follow_rise(&factors);
+        let prev_slow = prev_slow.map(|p| p * rise);
         self.follow_jump(&factors, agree, settle);
         // A move that doubts the weighing it started from: while every
         // rope weighs, the averages, restarted at the old load, take up
