@@ -2161,7 +2161,11 @@ impl<T: Real> StaticLoadBank<T> {
         // After a light move the averages follow W_fast up instead (see
         // the module doc): a ratio to an average raised moments ago is no
         // ratio to a weighing.
-        let at_rest = self.still && self.after_move && !agree && !self.light_at_stop;
+        // Nor in the stop's bounce window after a move whose load added was
+        // followed in motion ([`crate::load_rise`]): the averages hold it,
+        // and the stop's bounce on the rope rises as a load added would.
+        let bouncing_after_rise = self.bounce_s > T::lit(0.0) && self.rise.followed_in_move();
+        let at_rest = self.still && self.after_move && !agree && !self.light_at_stop && !bouncing_after_rise;
         let mut scale = T::lit(1.0);
         if at_rest {
             let bar = best.map_or(T::lit(0.0), load_jump::bar);
@@ -2231,7 +2235,7 @@ impl<T: Real> StaticLoadBank<T> {
             };
         }
         let scale = self.rise.update(&readings, self.slow_kg, self.dt_s);
-        if scale > T::lit(1.0) {
+        if scale != T::lit(1.0) {
             for h in self.hypotheses.iter_mut() {
                 if let Some(st) = h.slow_kg.as_mut() {
                     for x in st.iter_mut() {
