@@ -94,6 +94,10 @@ struct PassEnd {
 
 /// Opens the log and runs every line through a fresh limiter, calling
 /// `on_event` for each state change. Per-cycle counts go to `cycles`.
+// Never inlined: `--json` runs two passes, and inlined into `run` each kept
+// its own limiter on the stack (the rope bank alone is 2.5 KB in f32); as
+// calls, the second pass reuses the first's frame.
+#[inline(never)]
 fn replay_pass(
     path: &str,
     config: &LimiterConfig<f32>,
@@ -237,7 +241,9 @@ pub fn run(syst: cortex_m::peripheral::SYST) -> u8 {
     } else {
         let _ = writeln!(err, "{}", replay::UNCALIBRATED_NOTE);
     }
-    if let Err(e) = Limiter::new(crate::model::hook_load_model(), config.clone()) {
+    // The configuration is checked as `Limiter::new` checks it, without a
+    // limiter of its own on the stack.
+    if let Err(e) = config.validate() {
         let _ = writeln!(err, "error: {e}");
         return EXIT_INPUT;
     }
