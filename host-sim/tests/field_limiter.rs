@@ -614,13 +614,19 @@ fn bounce_on_the_rope(samples: &mut [crane_model::sim::simulation::Sample<f64>],
         }
         let x = &mut samples[i + 1];
         let load_kg = x.hook_load_kg;
-        let slope = model()
-            .piston_force_n(crane_model::loads::load_model::BoomState { angle_rad: x.boom_angle_rad, rate_rad_s: 0.0 })
-            .map(|q| q.per_kg + 2.0 * q.per_kg2 * load_kg)
-            .expect("model");
-        x.reactions.piston_force_n += slope * load_kg * (-e_dd) / 9.81;
+        x.reactions.piston_force_n += force_per_kg(x.boom_angle_rad, load_kg) * load_kg * (-e_dd) / 9.81;
         BOUNCE_PEAK.with(|p| p.set(p.get().max(e_dd.abs() / 9.81)));
     }
+}
+
+/// The model's piston force per kg more of hook load (N/kg) at rest at
+/// `angle_rad` with `load_kg` on the hook: how a change of the rope's pull
+/// reaches the cylinder.
+fn force_per_kg(angle_rad: f64, load_kg: f64) -> f64 {
+    model()
+        .piston_force_n(crane_model::loads::load_model::BoomState { angle_rad, rate_rad_s: 0.0 })
+        .map(|q| q.per_kg + 2.0 * q.per_kg2 * load_kg)
+        .expect("model")
 }
 
 /// A load taken up on a rope that rings: the rope's pull y (kg of hook
@@ -645,11 +651,7 @@ fn ring_the_take_up(samples: &mut [crane_model::sim::simulation::Sample<f64>], (
             y += v * h;
         }
         t = x.t_s;
-        let slope = model()
-            .piston_force_n(crane_model::loads::load_model::BoomState { angle_rad: x.boom_angle_rad, rate_rad_s: 0.0 })
-            .map(|q| q.per_kg + 2.0 * q.per_kg2 * x.hook_load_kg)
-            .expect("model");
-        x.reactions.piston_force_n += slope * (y - x.hook_load_kg);
+        x.reactions.piston_force_n += force_per_kg(x.boom_angle_rad, x.hook_load_kg) * (y - x.hook_load_kg);
     }
 }
 
@@ -4909,6 +4911,15 @@ struct InMotion {
     lowest_onset_u: f64,
 }
 
+impl InMotion {
+    /// The known gap at its pinned size (`a_load_added_in_motion_*`): 110 %
+    /// cut within 3.5 s of its take-up, no lowering uncut over true u 1.15,
+    /// none cut before 1/1.1, 90 % added in a raise never an OVERLOAD.
+    fn within_the_pinned_gap(&self) -> bool {
+        self.slowest_110_s <= 3.5 && self.highest_uncut_u <= 1.15 && self.cut_90.is_empty() && self.lowest_onset_u >= 1.0 / 1.1
+    }
+}
+
 /// A load added in motion (a second load hooked on, or a hook caught,
 /// while the boom luffs): in the second formulation's world, whose hook
 /// load may change at any instant (the load keeps its swing), 50 % of the
@@ -5049,7 +5060,7 @@ fn a_load_added_in_motion_known_gap() {
 fn a_load_added_in_motion_stays_as_measured() {
     for precision in [Precision::F64, Precision::F32] {
         let got = load_added_in_motion(precision);
-        assert!(got.slowest_110_s <= 3.5 && got.highest_uncut_u <= 1.15 && got.cut_90.is_empty() && got.lowest_onset_u >= 1.0 / 1.1, "{precision:?}: {got:?}");
+        assert!(got.within_the_pinned_gap(), "{precision:?}: {got:?}");
     }
 }
 
@@ -5070,6 +5081,6 @@ fn a_load_added_in_motion_on_a_ringing_rope_stays_as_measured() {
     for (hz, zeta) in [(1.0, 0.05), (2.0, 0.05), (1.0, 0.02)] {
         let got = load_added_in_motion_ringing(Precision::F64, Some((hz, zeta)));
         println!("a {hz} Hz ring, zeta {zeta}: {got:?}");
-        assert!(got.slowest_110_s <= 3.5 && got.highest_uncut_u <= 1.15 && got.cut_90.is_empty() && got.lowest_onset_u >= 1.0 / 1.1, "{hz} Hz, zeta {zeta}: {got:?}");
+        assert!(got.within_the_pinned_gap(), "{hz} Hz, zeta {zeta}: {got:?}");
     }
 }

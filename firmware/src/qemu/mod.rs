@@ -95,7 +95,7 @@ struct PassEnd {
 /// Opens the log and runs every line through a fresh limiter, calling
 /// `on_event` for each state change. Per-cycle counts go to `cycles`.
 // Never inlined: `--json` runs two passes, and inlined into `run` each kept
-// its own limiter on the stack (the rope bank alone is 2.5 KB in f32); as
+// its own limiter on the stack (the rope bank alone is 2.8 KB in f32); as
 // calls, the second pass reuses the first's frame.
 #[inline(never)]
 fn replay_pass(
