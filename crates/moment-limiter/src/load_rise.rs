@@ -211,11 +211,12 @@ impl<T: Real> Snapshots<T> {
     /// The lowest reading of the last 0.5–0.75 s (kg); `None` unless the
     /// rope weighed in every block.
     fn envelope_kg(&self) -> Option<T> {
-        let mut envelope: Option<T> = None;
+        let mut lowest: Option<T> = None;
         for b in self.block_min_kg.iter() {
-            envelope = lowest(envelope, (*b)?);
+            let b = (*b)?;
+            lowest = Some(lowest.map_or(b, |m: T| m.min(b)));
         }
-        envelope
+        lowest
     }
 
     /// D_k at the oldest snapshot.
@@ -234,11 +235,6 @@ impl<T: Real> Snapshots<T> {
             _ => None,
         }
     }
-}
-
-/// The lower of `m` (none yet) and `x`.
-fn lowest<T: Real>(m: Option<T>, x: T) -> Option<T> {
-    Some(m.map_or(x, |m| m.min(x)))
 }
 
 /// The follower of a load added in motion (see the module doc), for `N`
@@ -403,7 +399,8 @@ impl<T: Real, const N: usize> RiseFollower<T, N> {
         let mut best: Option<T> = None;
         for (s, r) in self.snapshots.iter().zip(readings.iter()) {
             if r.is_some() && s.before_kg().is_some() {
-                best = lowest(best, s.inconsistency_before());
+                let d = s.inconsistency_before();
+                best = Some(best.map_or(d, |m: T| m.min(d)));
             }
         }
         let bar = best.map_or(T::lit(0.0), load_jump::bar);
@@ -413,10 +410,11 @@ impl<T: Real, const N: usize> RiseFollower<T, N> {
                 continue;
             };
             let q = r.fast_kg / b;
-            common = lowest(common, q);
+            common = Some(common.map_or(q, |m: T| m.min(q)));
             if s.votes(r.average_kg, weighing_kg, bar).is_some() {
-                voted = lowest(voted, q);
-                up = lowest(up, r.fast_kg - b);
+                voted = Some(voted.map_or(q, |m: T| m.min(q)));
+                let d = r.fast_kg - b;
+                up = Some(up.map_or(d, |m: T| m.min(d)));
             }
         }
         let jump = T::lit(1.0 + load_jump::JUMP);
@@ -443,6 +441,7 @@ impl<T: Real, const N: usize> RiseFollower<T, N> {
     fn follow(&mut self, readings: &[Option<Reading<T>>; N]) -> T {
         let one = T::lit(1.0);
         let (mut sigma, mut envelope, mut rho): (Option<T>, Option<T>, Option<T>) = (None, None, None);
+        let lowest = |m: Option<T>, x: T| Some(m.map_or(x, |m: T| m.min(x)));
         for (s, r) in self.snapshots.iter().zip(readings.iter()) {
             if let (Some(b), Some(r)) = (s.reference_kg, r) {
                 let Some(a) = r.average_kg else {
